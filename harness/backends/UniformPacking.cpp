@@ -1,0 +1,54 @@
+#include "backends/UniformPacking.h"
+
+#include <cstring>
+#include <string>
+
+namespace shaderbed {
+namespace {
+
+void write_scalar(std::vector<std::byte>& out, size_t offset, float v, bool is_float) {
+  if (offset + 4 > out.size()) return;
+  if (is_float) {
+    std::memcpy(out.data() + offset, &v, 4);
+  } else {
+    int32_t i = static_cast<int32_t>(v);
+    std::memcpy(out.data() + offset, &i, 4);
+  }
+}
+
+}  // namespace
+
+Result<std::vector<std::byte>> pack_uniform_block(const UniformBlock& block, const UniformResolver& resolver) {
+  std::vector<std::byte> bytes(block.size, std::byte{0});
+  for (const UniformMember& m : block.members) {
+    auto value = resolver.value(block, m);
+    if (!value) return std::unexpected(value.error());
+    const std::vector<float>& v = *value;
+    const uint32_t elements = m.array_size ? m.array_size : 1;
+    const uint32_t per_element = m.vecsize * m.columns;
+    if (v.size() < size_t(per_element) * elements && !(m.columns == 1 && m.vecsize <= 4 && v.size() >= m.vecsize)) {
+      return fail("bind", "uniform '" + m.name + "' needs " + std::to_string(per_element * elements) +
+                              " values, the binding supplies " + std::to_string(v.size()));
+    }
+    for (uint32_t e = 0; e < elements; ++e) {
+      const size_t base = m.offset + size_t(e) * m.array_stride;
+      const float* src = v.data() + size_t(e) * per_element;
+      if (m.columns == 1) {
+        for (uint32_t c = 0; c < m.vecsize; ++c) write_scalar(bytes, base + c * 4, src[c], m.is_float);
+        continue;
+      }
+      // Matrix: src is column-major M (src[col * rows + row]).
+      const uint32_t rows = m.vecsize, cols = m.columns;
+      for (uint32_t col = 0; col < cols; ++col)
+        for (uint32_t row = 0; row < rows; ++row) {
+          const float x = src[col * rows + row];
+          const size_t at = m.column_registers ? base + col * m.matrix_stride + row * 4
+                                               : base + row * m.matrix_stride + col * 4;
+          write_scalar(bytes, at, x, m.is_float);
+        }
+    }
+  }
+  return bytes;
+}
+
+}  // namespace shaderbed

@@ -1,0 +1,24 @@
+#pragma once
+// The mesh as GL vertex and index buffers, with one vertex attribute per shader input,
+// matched to the mesh's streams by semantic or name (attribute_stream_for).
+#include <vector>
+
+#include "backends/gl/GlObject.h"
+#include "compile/ShaderModule.h"
+#include "core/Error.h"
+#include "scene/Mesh.h"
+
+namespace shaderbed::gl {
+
+struct GlMesh {
+  GlVertexArray vertex_array;  // bound, ready for glDrawElements
+  GlBuffer vertices;
+  GlBuffer indices;
+  GLsizei index_count = 0;
+};
+
+// Rejects meshes that would make the driver read out of bounds (indices past the
+// vertex count, a partial triangle) instead of drawing garbage.
+Result<GlMesh> upload_mesh(const GlFunctions& gl, const Mesh& mesh, const std::vector<StageInput>& inputs);
+
+}  // namespace shaderbed::gl

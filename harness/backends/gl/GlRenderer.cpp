@@ -1,0 +1,203 @@
+#include "backends/gl/GlRenderer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <string>
+#include <utility>
+
+#include "backends/gl/GlError.h"
+#include "backends/gl/GlMeshUpload.h"
+#include "backends/gl/GlProgramBuilder.h"
+#include "backends/gl/GlProgramInterface.h"
+#include "backends/gl/GlUniformUpload.h"
+
+namespace shaderbed {
+
+Result<std::unique_ptr<Backend>> make_gl_backend() {
+  auto renderer = gl::GlRenderer::create();
+  if (!renderer) return std::unexpected(renderer.error());
+  return std::unique_ptr<Backend>(std::move(*renderer));
+}
+
+namespace gl {
+namespace {
+
+class Stopwatch {
+ public:
+  double lap_ms() {
+    const auto now = std::chrono::steady_clock::now();
+    const double ms = std::chrono::duration<double, std::milli>(now - start_).count();
+    start_ = now;
+    return ms;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+std::string gl_string(const GlFunctions& gl, GLenum name) {
+  const GLubyte* text = gl.GetString(name);
+  return text ? reinterpret_cast<const char*>(text) : "?";
+}
+
+bool has_extension(const GlFunctions& gl, std::string_view wanted) {
+  GLint count = 0;
+  gl.GetIntegerv(GL_NUM_EXTENSIONS, &count);
+  for (GLint i = 0; i < count; ++i) {
+    const GLubyte* name = gl.GetStringi(GL_EXTENSIONS, GLuint(i));
+    if (name && wanted == reinterpret_cast<const char*>(name)) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+GlRenderer::GlRenderer(OsMesaContext context, GlFunctions functions)
+    : context_(std::move(context)), gl_(functions) {}
+
+GlRenderer::~GlRenderer() {
+  // The target's GL objects are deleted in the member destructors, which need the
+  // context current on this thread.
+  (void)context_.make_current();
+}
+
+Result<std::unique_ptr<GlRenderer>> GlRenderer::create() {
+  auto context = OsMesaContext::create(4, 5);
+  if (!context) return std::unexpected(context.error());
+  auto functions = load_gl_functions(OsMesaContext::proc_loader());
+  if (!functions) return std::unexpected(functions.error());
+  std::unique_ptr<GlRenderer> renderer(new GlRenderer(std::move(*context), *functions));
+  const GlFunctions& gl = renderer->gl_;
+
+  GLint major = 0, minor = 0;
+  gl.GetIntegerv(GL_MAJOR_VERSION, &major);
+  gl.GetIntegerv(GL_MINOR_VERSION, &minor);
+  // glClipControl and the program interface query are core in 4.5; Mesa's loader
+  // returns no-op stubs for what a context lacks, so the version is the real check.
+  if (major * 10 + minor < 45)
+    return std::unexpected(gl_error("OSMesa gave a " + std::to_string(major) + "." + std::to_string(minor) +
+                                    " context; the GL backend needs 4.5 core"));
+  renderer->driver_version_ = gl_string(gl, GL_RENDERER) + ", OpenGL " + gl_string(gl, GL_VERSION);
+  renderer->has_gl_spirv_ = has_extension(gl, "GL_ARB_gl_spirv");
+  if (auto ok = check_gl(gl, "querying the context"); !ok) return std::unexpected(ok.error());
+  return renderer;
+}
+
+std::vector<ShaderPath> GlRenderer::paths(Language language) const {
+  if (language == Language::glsl) return {ShaderPath::native_glsl, ShaderPath::spirv, ShaderPath::cross_glsl};
+  return {ShaderPath::spirv, ShaderPath::cross_glsl};
+}
+
+Result<RenderOutput> GlRenderer::render(const DrawJob& job) {
+  auto output = render_on_path(job);
+  if (output) return output;
+  Error error = std::move(output.error());
+  error.message = std::string(to_string(job.path)) + " path: " + error.message;
+  return std::unexpected(std::move(error).in_stage("gl").in_backend("gl"));
+}
+
+Result<const GlRenderTarget*> GlRenderer::target_of_size(int width, int height) {
+  if (!target_ || target_->width() != width || target_->height() != height) {
+    target_.reset();
+    auto created = GlRenderTarget::create(gl_, width, height);
+    if (!created) return std::unexpected(created.error());
+    target_.emplace(std::move(*created));
+  }
+  return &*target_;
+}
+
+void GlRenderer::set_fixed_function_state() const {
+  // Projection matrices are D3D/Vulkan style (z in [0, 1]); origin stays lower-left and
+  // the readback flips rows instead.
+  gl_.ClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+  gl_.DepthRange(0.0, 1.0);
+  gl_.Enable(GL_DEPTH_TEST);
+  gl_.DepthFunc(GL_LESS);
+  gl_.DepthMask(GL_TRUE);
+  gl_.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  gl_.PolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  for (GLenum off : {GL_CULL_FACE, GL_BLEND, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_DITHER, GL_FRAMEBUFFER_SRGB,
+                     GL_MULTISAMPLE, GL_POLYGON_OFFSET_FILL, GL_DEPTH_CLAMP, GL_RASTERIZER_DISCARD,
+                     GL_SAMPLE_ALPHA_TO_COVERAGE})
+    gl_.Disable(off);
+  gl_.ClampColor(GL_CLAMP_READ_COLOR, GL_FALSE);
+}
+
+Result<RenderOutput> GlRenderer::render_on_path(const DrawJob& job) {
+  if (auto current = context_.make_current(); !current) return std::unexpected(current.error());
+  drain_gl_errors(gl_);  // a stale flag must not be blamed on this draw
+  if (const auto offered = paths(job.program.language); std::ranges::find(offered, job.path) == offered.end())
+    return std::unexpected(gl_error(std::string("the GL backend does not take ") + to_string(job.program.language) +
+                                    " programs this way"));
+  if (job.path == ShaderPath::spirv && !has_gl_spirv_)
+    return std::unexpected(gl_error("this OpenGL (" + driver_version_ + ") lacks GL_ARB_gl_spirv"));
+
+  auto target = target_of_size(job.width, job.height);
+  if (!target) return std::unexpected(target.error());
+
+  RenderOutput output;
+  Stopwatch stopwatch;
+  auto program = build_gl_program(gl_, job.program, job.path);
+  if (!program) return std::unexpected(program.error());
+  output.timings.build_ms = stopwatch.lap_ms();  // the warm-up draw below adds the JIT
+
+  Result<GlProgramInterface> interface;
+  if (job.path == ShaderPath::native_glsl) {
+    interface = introspect_gl_program(gl_, program->get(), BlockBindings::assign_distinct);
+  } else {
+    interface = interface_from_reflection(job.program);
+    if (interface && job.path == ShaderPath::cross_glsl) {
+      auto seen_by_gl = introspect_gl_program(gl_, program->get(), BlockBindings::keep);
+      if (!seen_by_gl) return std::unexpected(seen_by_gl.error());
+      if (auto same = check_cross_glsl_layout(*seen_by_gl, *interface); !same) return std::unexpected(same.error());
+    }
+  }
+  if (!interface) return std::unexpected(interface.error());
+  if (!interface->samplers.empty())
+    return std::unexpected(gl_error("samplers are not supported yet (the program declares '" +
+                                    interface->samplers.front().name + "', and a DrawJob carries no textures)"));
+
+  auto uniform_buffers = upload_uniform_blocks(gl_, interface->uniform_blocks, job.uniforms);
+  if (!uniform_buffers) return std::unexpected(uniform_buffers.error());
+  if (auto ok = set_loose_uniforms(gl_, program->get(), interface->loose_uniforms, job.uniforms); !ok)
+    return std::unexpected(ok.error());
+  auto mesh = upload_mesh(gl_, job.mesh, interface->inputs);
+  if (!mesh) return std::unexpected(mesh.error());
+
+  (*target)->bind();
+  set_fixed_function_state();
+  gl_.UseProgram(program->get());
+  gl_.BindVertexArray(mesh->vertex_array.get());
+  if (auto ok = check_gl(gl_, "setting up the draw"); !ok) return std::unexpected(ok.error());
+  gl_.Finish();  // uploads are not the draw's cost
+
+  // llvmpipe JIT-compiles the shaders for the current state at the first draw, not at
+  // link time. One triangle drawn with the same state moves that compile into build_ms,
+  // where lavapipe's pipeline creation has it, and leaves draw_ms the cost of drawing.
+  stopwatch.lap_ms();
+  gl_.DrawElements(GL_TRIANGLES, std::min<GLsizei>(3, mesh->index_count), GL_UNSIGNED_INT, nullptr);
+  gl_.Finish();
+  output.timings.build_ms += stopwatch.lap_ms();
+
+  const GLfloat transparent_black[4] = {0, 0, 0, 0};
+  const GLfloat far_depth = 1.0f;
+  gl_.ClearBufferfv(GL_COLOR, 0, transparent_black);
+  gl_.ClearBufferfv(GL_DEPTH, 0, &far_depth);
+  gl_.DrawElements(GL_TRIANGLES, mesh->index_count, GL_UNSIGNED_INT, nullptr);
+  gl_.Finish();
+  output.timings.draw_ms = stopwatch.lap_ms();
+  gl_.UseProgram(0);
+  gl_.BindVertexArray(0);
+  if (auto ok = check_gl(gl_, "drawing " + std::to_string(mesh->index_count / 3) + " triangles"); !ok)
+    return std::unexpected(ok.error());
+
+  auto image = (*target)->read_back();
+  if (!image) return std::unexpected(image.error());
+  output.timings.readback_ms = stopwatch.lap_ms();
+  output.image = std::move(*image);
+  gl_.BindFramebuffer(GL_FRAMEBUFFER, 0);
+  return output;
+}
+
+}  // namespace gl
+}  // namespace shaderbed

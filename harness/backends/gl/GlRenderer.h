@@ -1,0 +1,44 @@
+#pragma once
+// The desktop-GL backend: Mesa llvmpipe through OSMesa, one core 4.5 context per
+// renderer, drawing into a cached float FBO. Three paths per program (native GLSL,
+// GL_ARB_gl_spirv, SPIRV-Cross GLSL) so front-end, cross-compiler and driver faults can
+// be told apart. Conventions match the Vulkan backend and the CPU reference: depth in
+// [0, 1] (glClipControl), clear to (0,0,0,0) and depth 1, GL_LESS, no culling, row 0
+// at the top.
+//
+// A renderer's context is bound to the calling thread on every render(); use one
+// renderer from one thread at a time.
+#include <optional>
+#include <string>
+
+#include "backends/Backend.h"
+#include "backends/gl/GlFunctions.h"
+#include "backends/gl/GlRenderTarget.h"
+#include "backends/gl/OsMesaContext.h"
+
+namespace shaderbed::gl {
+
+class GlRenderer final : public Backend {
+ public:
+  static Result<std::unique_ptr<GlRenderer>> create();
+  ~GlRenderer() override;
+
+  std::string_view name() const override { return "gl"; }
+  std::string driver_version() const override { return driver_version_; }
+  std::vector<ShaderPath> paths(Language language) const override;
+  Result<RenderOutput> render(const DrawJob& job) override;
+
+ private:
+  GlRenderer(OsMesaContext context, GlFunctions functions);
+  Result<RenderOutput> render_on_path(const DrawJob& job);
+  Result<const GlRenderTarget*> target_of_size(int width, int height);
+  void set_fixed_function_state() const;
+
+  OsMesaContext context_;
+  GlFunctions gl_;
+  std::string driver_version_;
+  bool has_gl_spirv_ = false;
+  std::optional<GlRenderTarget> target_;  // kept across renders of the same size
+};
+
+}  // namespace shaderbed::gl

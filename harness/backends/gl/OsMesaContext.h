@@ -1,0 +1,32 @@
+#pragma once
+// One OSMesa core-profile context. It renders only into FBOs, so the buffer it is made
+// current on is a tiny dummy that is never read. This is the only file that includes
+// osmesa.h: its GL/gl.h and glcorearb.h do not mix.
+#include <memory>
+
+#include "backends/gl/GlFunctions.h"
+#include "core/Error.h"
+
+namespace shaderbed::gl {
+
+class OsMesaContext {
+ public:
+  // A core-profile context of at least major.minor, current on this thread.
+  static Result<OsMesaContext> create(int major, int minor);
+
+  OsMesaContext(OsMesaContext&&) noexcept;
+  OsMesaContext& operator=(OsMesaContext&&) noexcept;
+  ~OsMesaContext();
+
+  // OSMesa contexts are per thread: call before issuing GL on the current thread.
+  Result<void> make_current() const;
+
+  static GlProcLoader proc_loader();
+
+ private:
+  struct Handle;
+  explicit OsMesaContext(std::unique_ptr<Handle>);
+  std::unique_ptr<Handle> handle_;
+};
+
+}  // namespace shaderbed::gl

@@ -1,0 +1,184 @@
+#include "backends/vulkan/VulkanDescriptors.h"
+
+#include <algorithm>
+#include <map>
+#include <string>
+#include <utility>
+
+#include "backends/vulkan/VulkanResult.h"
+
+namespace shaderbed::vulkan {
+namespace {
+
+bool same_member(const UniformMember& a, const UniformMember& b) {
+  return a.name == b.name && a.offset == b.offset && a.size == b.size && a.is_float == b.is_float &&
+         a.vecsize == b.vecsize && a.columns == b.columns && a.matrix_stride == b.matrix_stride &&
+         a.column_registers == b.column_registers && a.array_size == b.array_size && a.array_stride == b.array_stride;
+}
+
+bool same_block(const UniformBlock& a, const UniformBlock& b) {
+  return a.name == b.name && a.size == b.size &&
+         std::ranges::equal(a.members, b.members, [](const auto& x, const auto& y) { return same_member(x, y); });
+}
+
+std::string where(const UniformBlock& block) {
+  return "uniform block '" + block.name + "' (set " + std::to_string(block.set) + ", binding " +
+         std::to_string(block.binding) + ")";
+}
+
+// Adds the block (and member, unless the resolver already named it) to resolver errors,
+// so "no value" becomes an error a user can act on whichever resolver produced it.
+class BlockContextResolver final : public UniformResolver {
+ public:
+  explicit BlockContextResolver(const UniformResolver& inner) : inner_(inner) {}
+  Result<std::vector<float>> value(const UniformBlock& block, const UniformMember& member) const override {
+    auto v = inner_.value(block, member);
+    if (v) return v;
+    Error e = std::move(v.error());
+    std::string context = where(block);
+    if (e.message.find(member.name) == std::string::npos) context += ", member '" + member.name + "'";
+    e.message = context + ": " + e.message;
+    return std::unexpected(std::move(e).in_backend("vulkan"));
+  }
+
+ private:
+  const UniformResolver& inner_;
+};
+
+}  // namespace
+
+Result<std::vector<UniformBlock>> program_uniform_blocks(const CompiledProgram& program) {
+  for (const ShaderModule* module : {&program.vertex, &program.fragment}) {
+    if (!module->reflection.samplers.empty()) {
+      const std::string stage = module->stage == Stage::vertex ? "vertex" : "fragment";
+      Error e = backend_error("samplers not supported yet (the " + stage + " shader declares '" +
+                              module->reflection.samplers.front().name + "')");
+      return std::unexpected(std::move(e).in_file(module->source_file));
+    }
+  }
+  std::map<std::pair<uint32_t, uint32_t>, UniformBlock> by_binding;
+  for (const ShaderModule* module : {&program.vertex, &program.fragment}) {
+    for (const UniformBlock& block : module->reflection.uniform_blocks) {
+      auto [it, inserted] = by_binding.try_emplace({block.set, block.binding}, block);
+      if (!inserted && !same_block(it->second, block))
+        return std::unexpected(backend_error("the vertex and fragment shaders declare different uniform blocks at set " +
+                                             std::to_string(block.set) + ", binding " + std::to_string(block.binding) +
+                                             " ('" + it->second.name + "' and '" + block.name + "')"));
+    }
+  }
+  std::vector<UniformBlock> blocks;
+  for (auto& [key, block] : by_binding) blocks.push_back(std::move(block));
+  return blocks;
+}
+
+Result<std::vector<PackedBlock>> pack_uniform_blocks(const std::vector<UniformBlock>& blocks,
+                                                     const UniformResolver& resolver) {
+  const BlockContextResolver with_context(resolver);
+  std::vector<PackedBlock> packed;
+  for (const UniformBlock& block : blocks) {
+    auto bytes = pack_uniform_block(block, with_context);
+    if (!bytes) return std::unexpected(std::move(bytes.error()).in_backend("vulkan"));
+    packed.push_back({block, std::move(*bytes)});
+  }
+  return packed;
+}
+
+Result<DescriptorBindings> DescriptorBindings::create(const VulkanDevice& device, const std::vector<PackedBlock>& blocks) {
+  VkDevice dev = device.device();
+  const VkPhysicalDeviceLimits& limits = device.properties().limits;
+  DescriptorBindings out;
+  if (blocks.empty()) return out;
+
+  // Stage flags vertex|fragment for every block: each counts against both stages' limits.
+  if (blocks.size() > limits.maxPerStageDescriptorUniformBuffers || blocks.size() > limits.maxDescriptorSetUniformBuffers)
+    return std::unexpected(backend_error("the program uses " + std::to_string(blocks.size()) +
+                                         " uniform blocks; the device allows " +
+                                         std::to_string(limits.maxPerStageDescriptorUniformBuffers)));
+  uint32_t set_count = 0;
+  for (const PackedBlock& p : blocks) {
+    set_count = std::max(set_count, p.block.set + 1);
+    if (p.block.set >= limits.maxBoundDescriptorSets)
+      return std::unexpected(backend_error(where(p.block) + " uses set " + std::to_string(p.block.set) +
+                                           "; the device binds sets 0.." +
+                                           std::to_string(limits.maxBoundDescriptorSets - 1)));
+    if (p.bytes.size() > limits.maxUniformBufferRange)
+      return std::unexpected(backend_error(where(p.block) + " is " + std::to_string(p.bytes.size()) +
+                                           " bytes; the device allows " + std::to_string(limits.maxUniformBufferRange)));
+  }
+
+  for (const PackedBlock& p : blocks) {
+    auto buffer = HostBuffer::create(device, p.bytes.size(), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+    if (!buffer) return std::unexpected(buffer.error());
+    buffer->write(p.bytes);
+    out.buffers_.push_back(std::move(*buffer));
+  }
+
+  uint32_t used_sets = 0;
+  for (uint32_t set = 0; set < set_count; ++set) {
+    std::vector<VkDescriptorSetLayoutBinding> bindings;
+    for (const PackedBlock& p : blocks)
+      if (p.block.set == set)
+        bindings.push_back({.binding = p.block.binding,
+                            .descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+                            .descriptorCount = 1,
+                            .stageFlags = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT});
+    if (!bindings.empty()) ++used_sets;
+    const VkDescriptorSetLayoutCreateInfo info{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO,
+                                               .bindingCount = uint32_t(bindings.size()),
+                                               .pBindings = bindings.data()};
+    VkDescriptorSetLayout layout;
+    if (auto ok = check(vkCreateDescriptorSetLayout(dev, &info, nullptr, &layout), "vkCreateDescriptorSetLayout"); !ok)
+      return std::unexpected(ok.error());
+    out.layouts_.emplace_back(dev, layout);
+  }
+
+  const VkDescriptorPoolSize pool_size{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, uint32_t(blocks.size())};
+  const VkDescriptorPoolCreateInfo pool_info{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO,
+                                             .maxSets = used_sets,
+                                             .poolSizeCount = 1,
+                                             .pPoolSizes = &pool_size};
+  VkDescriptorPool pool;
+  if (auto ok = check(vkCreateDescriptorPool(dev, &pool_info, nullptr, &pool), "vkCreateDescriptorPool"); !ok)
+    return std::unexpected(ok.error());
+  out.pool_ = OwnedDescriptorPool(dev, pool);
+
+  out.sets_.assign(set_count, VK_NULL_HANDLE);
+  std::vector<VkDescriptorBufferInfo> buffer_infos(blocks.size());
+  std::vector<VkWriteDescriptorSet> writes;
+  for (uint32_t set = 0; set < set_count; ++set) {
+    const bool used = std::ranges::any_of(blocks, [&](const PackedBlock& p) { return p.block.set == set; });
+    if (!used) continue;
+    const VkDescriptorSetLayout layout = out.layouts_[set].get();
+    const VkDescriptorSetAllocateInfo alloc{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO,
+                                            .descriptorPool = pool,
+                                            .descriptorSetCount = 1,
+                                            .pSetLayouts = &layout};
+    if (auto ok = check(vkAllocateDescriptorSets(dev, &alloc, &out.sets_[set]), "vkAllocateDescriptorSets"); !ok)
+      return std::unexpected(ok.error());
+  }
+  for (size_t i = 0; i < blocks.size(); ++i) {
+    buffer_infos[i] = {out.buffers_[i].buffer(), 0, VK_WHOLE_SIZE};
+    writes.push_back({.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+                      .dstSet = out.sets_[blocks[i].block.set],
+                      .dstBinding = blocks[i].block.binding,
+                      .descriptorCount = 1,
+                      .descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+                      .pBufferInfo = &buffer_infos[i]});
+  }
+  vkUpdateDescriptorSets(dev, uint32_t(writes.size()), writes.data(), 0, nullptr);
+  return out;
+}
+
+std::vector<VkDescriptorSetLayout> DescriptorBindings::set_layouts() const {
+  std::vector<VkDescriptorSetLayout> layouts;
+  for (const auto& layout : layouts_) layouts.push_back(layout.get());
+  return layouts;
+}
+
+void DescriptorBindings::bind(VkCommandBuffer commands, VkPipelineLayout pipeline_layout) const {
+  for (uint32_t set = 0; set < sets_.size(); ++set)
+    if (sets_[set] != VK_NULL_HANDLE)
+      vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_layout, set, 1, &sets_[set], 0, nullptr);
+}
+
+}  // namespace shaderbed::vulkan

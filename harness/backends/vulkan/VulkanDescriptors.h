@@ -1,0 +1,50 @@
+#pragma once
+// Uniform blocks -> descriptor sets: the blocks of both stages are merged by
+// (set, binding), each is packed from the UniformResolver into its own host-visible
+// uniform buffer, and every used set gets a layout, a descriptor set and its writes.
+#include <cstddef>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "backends/UniformPacking.h"
+#include "backends/vulkan/VulkanDevice.h"
+#include "backends/vulkan/VulkanHandles.h"
+#include "backends/vulkan/VulkanMemory.h"
+#include "compile/ShaderModule.h"
+#include "core/Error.h"
+
+namespace shaderbed::vulkan {
+
+// The union of both stages' uniform blocks, sorted by (set, binding). A block declared
+// at the same set/binding by both stages must be identical there. Samplers are an
+// error until the backend binds textures.
+Result<std::vector<UniformBlock>> program_uniform_blocks(const CompiledProgram& program);
+
+struct PackedBlock {
+  UniformBlock block;
+  std::vector<std::byte> bytes;
+};
+
+// Every member of every block resolved and packed, before any Vulkan object exists, so
+// a missing binding fails fast. Errors name the block (and the member).
+Result<std::vector<PackedBlock>> pack_uniform_blocks(const std::vector<UniformBlock>& blocks,
+                                                     const UniformResolver& resolver);
+
+class DescriptorBindings {
+ public:
+  static Result<DescriptorBindings> create(const VulkanDevice& device, const std::vector<PackedBlock>& blocks);
+
+  // One layout per set number 0..highest used (unused numbers get an empty layout, as
+  // a pipeline layout's sets are numbered by position).
+  std::vector<VkDescriptorSetLayout> set_layouts() const;
+  void bind(VkCommandBuffer commands, VkPipelineLayout pipeline_layout) const;
+
+ private:
+  std::vector<HostBuffer> buffers_;
+  std::vector<OwnedDescriptorSetLayout> layouts_;
+  OwnedDescriptorPool pool_;                  // frees the sets with it
+  std::vector<VkDescriptorSet> sets_;         // by set number; VK_NULL_HANDLE for unused numbers
+};
+
+}  // namespace shaderbed::vulkan

@@ -1,0 +1,77 @@
+#pragma once
+// The headless Vulkan instance + device on Mesa's lavapipe (a CPU device), created once
+// per backend and reused by every render(): instance and device creation cost far more
+// than a draw, and one device keeps the driver state identical between draws.
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <vulkan/vulkan.h>
+
+#include "backends/vulkan/VulkanHandles.h"
+#include "core/Error.h"
+
+namespace shaderbed::vulkan {
+
+// lavapipe's ICD manifest as Debian's mesa-vulkan-drivers installs it.
+inline constexpr const char* lavapipe_icd_manifest = "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json";
+
+class VulkanDevice {
+ public:
+  // Pins the lavapipe ICD (unless the user chose drivers), creates the instance, picks
+  // the CPU device and creates a device with one graphics queue.
+  static Result<std::unique_ptr<VulkanDevice>> create();
+  ~VulkanDevice();
+  VulkanDevice(const VulkanDevice&) = delete;
+  VulkanDevice& operator=(const VulkanDevice&) = delete;
+
+  VkDevice device() const { return device_; }
+  VkPhysicalDevice physical_device() const { return physical_device_; }
+  const VkPhysicalDeviceProperties& properties() const { return properties_; }
+  // "llvmpipe / Mesa 22.3.6 (LLVM 15.0.6)"
+  const std::string& driver_version() const { return driver_version_; }
+
+  // First memory type allowed by type_bits that has all of `required`.
+  Result<uint32_t> memory_type(uint32_t type_bits, VkMemoryPropertyFlags required) const;
+
+  // Records one command buffer with `record`, submits it and waits for it. After a
+  // timeout the device is considered lost: the work may still be running, so every
+  // later call fails instead of touching objects the driver may still be using.
+  Result<void> submit_and_wait(const std::function<void(VkCommandBuffer)>& record);
+  bool lost() const { return lost_; }
+
+  // Two timestamps (begin, end) written around work recorded in submit_and_wait;
+  // nullopt when the queue has no timestamp support.
+  std::optional<VkQueryPool> timestamp_pool() const;
+  // Nanoseconds per timestamp tick and the valid bit mask of a timestamp value.
+  double timestamp_period_ns() const { return properties_.limits.timestampPeriod; }
+  uint64_t timestamp_mask() const { return timestamp_mask_; }
+
+  // How long submit_and_wait waits before declaring the device lost. A draw on lavapipe
+  // takes milliseconds; only a shader that never terminates gets near this.
+  static constexpr std::chrono::seconds wait_timeout{60};
+
+ private:
+  VulkanDevice() = default;
+
+  VkInstance instance_ = VK_NULL_HANDLE;
+  VkPhysicalDevice physical_device_ = VK_NULL_HANDLE;
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkQueue queue_ = VK_NULL_HANDLE;
+  uint32_t queue_family_ = 0;
+  VkPhysicalDeviceProperties properties_{};
+  VkPhysicalDeviceMemoryProperties memory_properties_{};
+  std::string driver_version_;
+  uint64_t timestamp_mask_ = 0;
+
+  OwnedCommandPool command_pool_;
+  VkCommandBuffer command_buffer_ = VK_NULL_HANDLE;  // freed with the pool
+  OwnedFence fence_;
+  OwnedQueryPool timestamp_pool_;
+  bool lost_ = false;
+};
+
+}  // namespace shaderbed::vulkan

@@ -1,0 +1,46 @@
+#pragma once
+// Buffers and images with their own memory. Every buffer is host-visible and coherent:
+// on lavapipe all memory is host memory, so staging copies would only add time.
+#include <cstddef>
+#include <span>
+
+#include <vulkan/vulkan.h>
+
+#include "backends/vulkan/VulkanDevice.h"
+#include "backends/vulkan/VulkanHandles.h"
+#include "core/Error.h"
+
+namespace shaderbed::vulkan {
+
+class HostBuffer {
+ public:
+  static Result<HostBuffer> create(const VulkanDevice& device, VkDeviceSize size, VkBufferUsageFlags usage);
+
+  VkBuffer buffer() const { return buffer_.get(); }
+  VkDeviceSize size() const { return size_; }
+  std::byte* data() const { return mapped_; }
+  void write(std::span<const std::byte> bytes, VkDeviceSize offset = 0) const;
+
+ private:
+  // Members destroy in reverse order: the buffer goes before the memory bound to it.
+  OwnedMemory memory_;
+  OwnedBuffer buffer_;
+  VkDeviceSize size_ = 0;
+  std::byte* mapped_ = nullptr;  // mapped for the buffer's lifetime; unmapped by vkFreeMemory
+};
+
+class DeviceImage {
+ public:
+  static Result<DeviceImage> create(const VulkanDevice& device, VkFormat format, VkExtent2D extent,
+                                    VkImageUsageFlags usage, VkImageAspectFlags aspect);
+
+  VkImage image() const { return image_.get(); }
+  VkImageView view() const { return view_.get(); }
+
+ private:
+  OwnedMemory memory_;
+  OwnedImage image_;
+  OwnedImageView view_;
+};
+
+}  // namespace shaderbed::vulkan

@@ -1,0 +1,31 @@
+#include "cli/run/CaseUniforms.h"
+
+namespace shaderbed {
+
+Result<std::vector<float>> CaseUniforms::value(const UniformBlock& block, const UniformMember& member) const {
+  auto it = bindings_.find(member.name);
+  // The book binds by constant register: c4 is the 16-byte slot at offset 64.
+  if (it == bindings_.end() && member.offset % 16 == 0) it = bindings_.find("c" + std::to_string(member.offset / 16));
+  if (it == bindings_.end())
+    return std::unexpected(Error{.message = "uniform '" + member.name + "' of block '" + block.name +
+                                            "' has no binding in the case (add it under [bindings.<language>])",
+                                 .file = case_path_, .stage = "bind"});
+  std::vector<float> out;
+  for (const std::string& source : it->second) {
+    auto v = values_.find(source);
+    if (v == values_.end())
+      return std::unexpected(Error{.message = "uniform '" + member.name + "' is bound to '" + source +
+                                              "', which is neither a scene quantity nor a parameter of the case",
+                                   .file = case_path_, .stage = "bind"});
+    out.insert(out.end(), v->second.begin(), v->second.end());
+  }
+  return out;
+}
+
+NamedValues bindable_values(const SceneSetup& scene, const std::map<std::string, std::vector<double>>& params) {
+  NamedValues values = scene_quantities(scene);
+  for (const auto& [name, v] : params) values.try_emplace(name, std::vector<float>(v.begin(), v.end()));
+  return values;
+}
+
+}  // namespace shaderbed

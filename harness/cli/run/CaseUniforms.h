@@ -1,0 +1,27 @@
+#pragma once
+// Binds a shader's uniforms from a case: the case's binding table for the language maps
+// a uniform name (or an HLSL register "cN" of the $Global block) to scene quantities
+// and model parameters, concatenated in order.
+#include "backends/UniformPacking.h"
+#include "scene/CaseFile.h"
+#include "scene/Scene.h"
+
+namespace shaderbed {
+
+class CaseUniforms final : public UniformResolver {
+ public:
+  CaseUniforms(const BindingTable& bindings, NamedValues values, std::string case_path)
+      : bindings_(bindings), values_(std::move(values)), case_path_(std::move(case_path)) {}
+
+  Result<std::vector<float>> value(const UniformBlock& block, const UniformMember& member) const override;
+
+ private:
+  const BindingTable& bindings_;
+  NamedValues values_;      // scene quantities and parameters by name
+  std::string case_path_;
+};
+
+// Scene quantities plus the case's parameters (parameters may not shadow quantities).
+NamedValues bindable_values(const SceneSetup& scene, const std::map<std::string, std::vector<double>>& params);
+
+}  // namespace shaderbed

@@ -1,0 +1,233 @@
+#include "cli/run/Runner.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "backends/Backend.h"
+#include "cli/run/CaseUniforms.h"
+#include "cli/run/ReferenceRender.h"
+#include "compare/ImageComparison.h"
+#include "compare/ImageFiles.h"
+#include "compile/Compiler.h"
+#include "compile/ToolVersions.h"
+#include "scene/CaseFile.h"
+#include "scene/Primitives.h"
+
+namespace shaderbed {
+namespace fs = std::filesystem;
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+
+bool wanted(const std::vector<std::string>& filter, const std::string& name) {
+  return filter.empty() || std::find(filter.begin(), filter.end(), name) != filter.end();
+}
+
+Result<void> check_names(const std::vector<std::string>& given, const std::vector<std::string>& known, const char* what) {
+  for (const std::string& g : given)
+    if (std::find(known.begin(), known.end(), g) == known.end()) {
+      std::string list;
+      for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+      return fail("options", fmt::format("unknown {} '{}' (known: {})", what, g, list));
+    }
+  return {};
+}
+
+Result<ProgramSource> load_program(Language language, const ShaderFiles& files) {
+  auto vs = load_shader_source(Stage::vertex, files.vertex);
+  if (!vs) return std::unexpected(vs.error());
+  auto fs_ = load_shader_source(Stage::fragment, files.fragment);
+  if (!fs_) return std::unexpected(fs_.error());
+  return ProgramSource{language, std::move(*vs), std::move(*fs_)};
+}
+
+// One backend, created on first use; if it cannot start, every cell on it is an error.
+struct BackendSlot {
+  std::string name;
+  Result<std::unique_ptr<Backend>> backend = fail("backend", "not started");
+};
+
+}  // namespace
+
+std::string default_cases_dir() {
+  if (const char* root = std::getenv("SHADERBED_ROOT")) return (fs::path(root) / "shaders" / "cases").string();
+  return (fs::path(SHADERBED_SOURCE_DIR) / "shaders" / "cases").string();
+}
+
+Result<RunReport> run_suite(const RunOptions& o) {
+  const auto start = Clock::now();
+  auto loaded = load_cases(o.cases_dir.empty() ? default_cases_dir() : o.cases_dir);
+  if (!loaded) return std::unexpected(loaded.error());
+  std::vector<std::string> case_names;
+  for (const Case& c : *loaded) case_names.push_back(c.name);
+  if (auto ok = check_names(o.cases, case_names, "case"); !ok) return std::unexpected(ok.error());
+  if (auto ok = check_names(o.backends, {"vulkan", "gl"}, "backend"); !ok) return std::unexpected(ok.error());
+  if (auto ok = check_names(o.languages, {"glsl", "hlsl", "cg"}, "language"); !ok) return std::unexpected(ok.error());
+  if (auto ok = check_names(o.shapes, shape_names(), "shape"); !ok) return std::unexpected(ok.error());
+  if (o.size < 8 || o.size > 4096) return fail("options", fmt::format("--size {} is outside 8..4096", o.size));
+
+  std::vector<BackendSlot> backends;
+  for (const char* name : {"vulkan", "gl"})
+    if (wanted(o.backends, name))
+      backends.push_back({name, std::string(name) == "vulkan" ? make_vulkan_backend() : make_gl_backend()});
+
+  RunReport report;
+  report.out_dir = o.out_dir;
+  const CompilerVersions versions = compiler_versions();
+  report.tools = {versions.glslang, versions.spirv_tools, versions.spirv_cross, "", ""};
+  for (const BackendSlot& b : backends) {
+    const std::string v = b.backend ? (*b.backend)->driver_version() : "unavailable: " + b.backend.error().message;
+    (b.name == "vulkan" ? report.tools.vulkan_driver : report.tools.gl_driver) = v;
+  }
+
+  SceneSetup scene;
+  scene.width = scene.height = o.size;
+
+  // Plan every cell first so progress can show done/total.
+  struct Cell {
+    const Case* c;
+    const Variant* variant;
+    Language language;
+    std::string shape;
+    BackendSlot* backend;
+    ShaderPath path;
+  };
+  std::vector<Cell> cells;
+  for (const Case& c : *loaded) {
+    if (!wanted(o.cases, c.name)) continue;
+    for (const Variant& v : c.variants)
+      for (const auto& [language, files] : v.shaders) {
+        if (!wanted(o.languages, to_string(language))) continue;
+        for (const std::string& shape : shape_names()) {
+          if (!wanted(o.shapes, shape)) continue;
+          for (BackendSlot& b : backends) {
+            const std::vector<ShaderPath> paths =
+                b.backend ? (*b.backend)->paths(language) : std::vector<ShaderPath>{ShaderPath::spirv};
+            for (ShaderPath p : paths) cells.push_back({&c, &v, language, shape, &b, p});
+          }
+        }
+      }
+  }
+
+  std::map<std::string, Result<CompiledProgram>> programs;   // by case/variant/language
+  std::map<std::string, double> compile_ms;
+  std::map<std::string, Result<ReferenceImage>> references;  // by case/variant/shape
+  std::map<std::string, double> reference_ms;
+  std::map<std::string, Mesh> meshes;                        // by shape/tessellation
+
+  for (const Cell& cell : cells) {
+    const Case& c = *cell.c;
+    const std::string lang = to_string(cell.language);
+    CellResult r{.case_name = c.name, .variant = cell.variant->name, .language = lang, .backend = cell.backend->name,
+                 .path = to_string(cell.path), .shape = cell.shape};
+    r.interior_threshold = c.interior.max_abs;
+    r.silhouette_threshold = c.silhouette.max_abs;
+    auto finish = [&](CellResult&& result) {
+      report.results.push_back(std::move(result));
+      if (o.on_cell) o.on_cell(report.results.size(), cells.size(), report.results.back());
+    };
+    auto error = [&](const Error& e) {
+      r.status = "error";
+      r.message = e.to_string();
+      finish(std::move(r));
+    };
+
+    const std::string program_key = c.name + "/" + cell.variant->name + "/" + lang;
+    if (!programs.contains(program_key)) {
+      const auto t0 = Clock::now();
+      auto source = load_program(cell.language, cell.variant->shaders.at(cell.language));
+      programs.emplace(program_key, source ? compile_program(*source) : std::unexpected(source.error()));
+      compile_ms[program_key] = ms_since(t0);
+    }
+    const Result<CompiledProgram>& program = programs.at(program_key);
+    if (!program) {
+      error(program.error());
+      continue;
+    }
+    r.time_ms["compile"] = compile_ms[program_key];
+
+    const std::string mesh_key = cell.shape + (c.tessellation == Tessellation::high ? "/high" : "/low");
+    if (!meshes.contains(mesh_key)) meshes.emplace(mesh_key, *make_shape(cell.shape, c.tessellation));
+    const Mesh& mesh = meshes.at(mesh_key);
+
+    const std::string ref_key = c.name + "/" + cell.variant->name + "/" + mesh_key;
+    if (!references.contains(ref_key)) {
+      const auto t0 = Clock::now();
+      references.emplace(ref_key, render_reference(mesh, scene, c, cell.variant->mode));
+      reference_ms[ref_key] = ms_since(t0);
+      if (references.at(ref_key) && !o.out_dir.empty()) {
+        const ReferenceImage& ref = *references.at(ref_key);
+        Image preview(ref.width, ref.height);
+        for (size_t i = 0; i < ref.rgba.size(); ++i) preview.rgba[i] = float(ref.rgba[i]);
+        preview.coverage = ref.coverage;
+        const fs::path dir = fs::path(o.out_dir) / c.name / cell.variant->name / cell.shape;
+        (void)write_exr((dir / "reference.exr").string(), ref.width, ref.height, preview.rgba);
+        (void)write_png((dir / "reference.png").string(), preview);
+      }
+    }
+    const Result<ReferenceImage>& reference = references.at(ref_key);
+    if (!reference) {
+      error(reference.error());
+      continue;
+    }
+    r.time_ms["reference"] = reference_ms[ref_key];
+
+    if (!cell.backend->backend) {
+      error(Error(cell.backend->backend.error()).in_backend(cell.backend->name));
+      continue;
+    }
+    auto bindings = c.bindings.find(cell.language);
+    static const BindingTable no_bindings;
+    CaseUniforms uniforms(bindings == c.bindings.end() ? no_bindings : bindings->second,
+                          bindable_values(scene, c.params), c.path);
+    auto rendered = (*cell.backend->backend)
+                        ->render(DrawJob{*program, cell.path, mesh, uniforms, scene.width, scene.height});
+    if (!rendered) {
+      error(Error(rendered.error()).in_backend(cell.backend->name + "/" + to_string(cell.path)));
+      continue;
+    }
+    r.time_ms["build"] = rendered->timings.build_ms;
+    r.time_ms["draw"] = rendered->timings.draw_ms;
+    r.time_ms["readback"] = rendered->timings.readback_ms;
+
+    const auto t0 = Clock::now();
+    const Comparison cmp = compare_images(rendered->image, *reference, {c.interior.max_abs, c.silhouette.max_abs});
+    r.time_ms["compare"] = ms_since(t0);
+    r.metrics = {cmp.interior.max_abs, cmp.interior.rmse, cmp.psnr,
+                 cmp.interior.bad_pixels + cmp.silhouette.bad_pixels, cmp.nonfinite, cmp.coverage_mismatch,
+                 cmp.silhouette.max_abs, cmp.interior.pixels, cmp.silhouette.pixels};
+    r.status = cmp.pass ? "pass" : "fail";
+    r.message = cmp.reason;
+
+    if (!o.out_dir.empty()) {
+      const fs::path dir = fs::path(o.out_dir) / c.name / cell.variant->name / cell.shape;
+      const std::string stem = fmt::format("{}-{}-{}", lang, cell.backend->name, to_string(cell.path));
+      r.image = (dir / (stem + ".exr")).string();
+      bool written_all = true;
+      for (auto written : {write_exr(r.image, scene.width, scene.height, rendered->image.rgba),
+                           write_png((dir / (stem + ".png")).string(), rendered->image),
+                           write_exr((dir / (stem + ".error.exr")).string(), scene.width, scene.height, cmp.error.rgba),
+                           // Error heat map: the interior tolerance shows as mid grey.
+                           write_png((dir / (stem + ".error.png")).string(), cmp.error,
+                                     float(0.5 / std::max(c.interior.max_abs, 1e-12)))})
+        if (written_all && !written) {
+          written_all = false;
+          error(written.error());
+        }
+      if (!written_all) continue;
+    }
+    finish(std::move(r));
+  }
+  report.wall_ms = ms_since(start);
+  return report;
+}
+
+}  // namespace shaderbed

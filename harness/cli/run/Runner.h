@@ -1,0 +1,32 @@
+#pragma once
+// Runs a suite: every case x variant x language x shape x backend x path cell is
+// compiled, drawn, compared with the reference, and reported. Bad input (unknown case,
+// backend, language or shape) is an Error; a cell that cannot be drawn is a result with
+// status "error", so one broken shader never hides the others.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/Error.h"
+#include "report/Results.h"
+
+namespace shaderbed {
+
+struct RunOptions {
+  std::string cases_dir;                 // folder of *.toml case files
+  std::vector<std::string> cases;        // empty = all
+  std::vector<std::string> backends;     // empty = vulkan, gl
+  std::vector<std::string> languages;    // empty = every language a case has
+  std::vector<std::string> shapes;       // empty = sphere, cube, cone, torus
+  int size = 256;
+  std::string out_dir;                   // images go here; empty = no images
+  std::function<void(size_t done, size_t total, const CellResult&)> on_cell;   // progress
+};
+
+Result<RunReport> run_suite(const RunOptions& options);
+
+// Where the source tree's shaders/cases folder is: $SHADERBED_ROOT/shaders/cases, else the
+// source directory this binary was built from.
+std::string default_cases_dir();
+
+}  // namespace shaderbed

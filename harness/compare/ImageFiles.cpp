@@ -1,0 +1,45 @@
+#include "compare/ImageFiles.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include <OpenImageIO/imageio.h>
+
+namespace shaderbed {
+namespace {
+
+Result<void> write_image(const std::string& path, const OIIO::ImageSpec& spec, const void* data) {
+  std::error_code ec;
+  std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
+  auto out = OIIO::ImageOutput::create(path);
+  if (!out) return std::unexpected(Error{.message = "no image writer: " + OIIO::geterror(), .file = path, .stage = "image"});
+  if (!out->open(path, spec) || !out->write_image(spec.format, data) || !out->close())
+    return std::unexpected(Error{.message = out->geterror(), .file = path, .stage = "image"});
+  return {};
+}
+
+}  // namespace
+
+Result<void> write_exr(const std::string& path, int width, int height, const std::vector<float>& rgba) {
+  OIIO::ImageSpec spec(width, height, 4, OIIO::TypeDesc::FLOAT);
+  return write_image(path, spec, rgba.data());
+}
+
+Result<void> write_png(const std::string& path, const Image& image, float scale) {
+  std::vector<uint8_t> bytes(size_t(image.width) * image.height * 4);
+  for (size_t i = 0; i < size_t(image.width) * image.height; ++i) {
+    const float* p = &image.rgba[i * 4];
+    uint8_t* o = &bytes[i * 4];
+    const bool finite = std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+    for (int c = 0; c < 3; ++c) {
+      const float v = finite ? std::clamp(p[c] * scale, 0.0f, 1.0f) : (c == 1 ? 0.0f : 1.0f);
+      o[c] = static_cast<uint8_t>(std::lround(v * 255.0f));
+    }
+    o[3] = image.coverage.empty() || image.coverage[i] ? 255 : 0;
+  }
+  OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
+  return write_image(path, spec, bytes.data());
+}
+
+}  // namespace shaderbed

@@ -1,0 +1,18 @@
+#pragma once
+// Images on disk: EXR keeps the exact float values (NaN included), PNG is for looking.
+#include <string>
+#include <vector>
+
+#include "core/Error.h"
+#include "core/Image.h"
+
+namespace shaderbed {
+
+// RGBA float EXR of the pixels as they are.
+Result<void> write_exr(const std::string& path, int width, int height, const std::vector<float>& rgba);
+
+// 8-bit PNG: RGB multiplied by `scale`, clamped to [0, 1]; NaN/Inf shown magenta so
+// they cannot pass for black; pixels not covered are transparent.
+Result<void> write_png(const std::string& path, const Image& image, float scale = 1.0f);
+
+}  // namespace shaderbed

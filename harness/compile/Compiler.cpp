@@ -1,0 +1,72 @@
+#include "compile/Compiler.h"
+
+#include <fstream>
+#include <sstream>
+
+#include "compile/CrossGlsl.h"
+#include "compile/GlslangFrontEnd.h"
+#include "compile/SpirvReflection.h"
+#include "compile/SpirvTools.h"
+
+namespace shaderbed {
+
+const char* to_string(Language l) {
+  switch (l) {
+    case Language::glsl: return "glsl";
+    case Language::hlsl: return "hlsl";
+    case Language::cg: return "cg";
+  }
+  return "?";
+}
+
+const char* to_string(Stage s) { return s == Stage::vertex ? "vertex" : "fragment"; }
+
+Result<ShaderSource> load_shader_source(Stage stage, const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::unexpected(Error{.message = "cannot read shader file", .file = path, .stage = "compile"});
+  std::ostringstream text;
+  text << in.rdbuf();
+  return ShaderSource{.stage = stage, .path = path, .text = text.str()};
+}
+
+Result<ShaderModule> compile_stage(Language language, const ShaderSource& source, Target target) {
+  auto spirv = glslang_to_spirv(language, source, target);
+  if (!spirv) return std::unexpected(spirv.error());
+  if (auto ok = validate_spirv(*spirv, target, source.path); !ok) return std::unexpected(ok.error());
+  auto reflection = reflect_spirv(*spirv, language, source.stage);
+  if (!reflection) return std::unexpected(std::move(reflection.error()).in_file(source.path));
+  return ShaderModule{.stage = source.stage,
+                      .source_file = source.path,
+                      .entry_point = source.entry_point,
+                      .spirv = std::move(*spirv),
+                      .reflection = std::move(*reflection)};
+}
+
+Result<CompiledProgram> compile_program(const ProgramSource& p) {
+  CompiledProgram out;
+  out.language = p.language;
+  struct Job {
+    const ShaderSource& src;
+    Target target;
+    ShaderModule& dst;
+  };
+  for (Job job : {Job{p.vertex, Target::vulkan, out.vertex}, Job{p.fragment, Target::vulkan, out.fragment},
+                  Job{p.vertex, Target::opengl, out.vertex_gl}, Job{p.fragment, Target::opengl, out.fragment_gl}}) {
+    auto module = compile_stage(p.language, job.src, job.target);
+    if (!module) return std::unexpected(module.error());
+    job.dst = std::move(*module);
+  }
+  auto vs = spirv_to_glsl(out.vertex_gl.spirv, Stage::vertex);
+  if (!vs) return std::unexpected(std::move(vs.error()).in_file(p.vertex.path));
+  auto fs = spirv_to_glsl(out.fragment_gl.spirv, Stage::fragment);
+  if (!fs) return std::unexpected(std::move(fs.error()).in_file(p.fragment.path));
+  out.vertex_cross_glsl = std::move(*vs);
+  out.fragment_cross_glsl = std::move(*fs);
+  if (p.language == Language::glsl) {
+    out.vertex_native_glsl = p.vertex.text;
+    out.fragment_native_glsl = p.fragment.text;
+  }
+  return out;
+}
+
+}  // namespace shaderbed

@@ -1,0 +1,38 @@
+#pragma once
+// Front ends (glslang: GLSL, HLSL in the book's DX9 style) to validated SPIR-V for the
+// Vulkan and OpenGL targets, with reflection, plus SPIRV-Cross GLSL for the GL path.
+#include <string>
+
+#include "compile/ShaderModule.h"
+#include "core/Error.h"
+
+namespace shaderbed {
+
+enum class Target { vulkan, opengl };
+
+struct ShaderSource {
+  Stage stage = Stage::vertex;
+  std::string path;        // for error messages and #include resolution
+  std::string text;
+  std::string entry_point = "main";
+};
+
+struct ProgramSource {
+  Language language = Language::glsl;
+  ShaderSource vertex;
+  ShaderSource fragment;
+};
+
+// Reads a file into a ShaderSource (error with the path when it cannot be read).
+Result<ShaderSource> load_shader_source(Stage stage, const std::string& path);
+
+// One stage to SPIR-V for one target; validated with spirv-val; reflection filled in.
+Result<ShaderModule> compile_stage(Language language, const ShaderSource& source, Target target);
+
+// Both stages, both targets, and the SPIRV-Cross GLSL of the OpenGL-target modules.
+Result<CompiledProgram> compile_program(const ProgramSource& program);
+
+// Human-readable SPIR-V disassembly (for reports and debugging).
+std::string disassemble(const std::vector<uint32_t>& spirv);
+
+}  // namespace shaderbed

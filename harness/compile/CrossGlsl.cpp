@@ -1,0 +1,42 @@
+#include "compile/CrossGlsl.h"
+
+#include <spirv_cross/spirv_glsl.hpp>
+
+namespace shaderbed {
+
+Result<std::string> spirv_to_glsl(const std::vector<uint32_t>& spirv, Stage stage) {
+  try {
+    spirv_cross::CompilerGLSL glsl(spirv);
+    spirv_cross::CompilerGLSL::Options options;
+    options.version = 450;
+    options.es = false;
+    options.vulkan_semantics = false;
+    glsl.set_common_options(options);
+
+    const spirv_cross::ShaderResources res = glsl.get_shader_resources();
+    // GL links varyings by name unless both sides agree on locations; HLSL's vertex
+    // outputs and pixel inputs have different names, so name them by location.
+    const auto rename_varyings = [&](const auto& resources, const char* dir) {
+      for (const spirv_cross::Resource& r : resources) {
+        if (!glsl.has_decoration(r.id, spv::DecorationLocation)) continue;
+        glsl.set_name(r.id, std::string("sb_") + dir + std::to_string(glsl.get_decoration(r.id, spv::DecorationLocation)));
+      }
+    };
+    if (stage == Stage::vertex) rename_varyings(res.stage_outputs, "varying");
+    if (stage == Stage::fragment) rename_varyings(res.stage_inputs, "varying");
+    // A GL program shares block names across stages: HLSL's two "$Global" blocks with
+    // different members would fail to link, so each stage gets its own name.
+    const char* suffix = stage == Stage::vertex ? "_vs" : "_fs";
+    for (const spirv_cross::Resource& ub : res.uniform_buffers) {
+      std::string type_name = glsl.get_name(ub.base_type_id);
+      if (type_name.empty() || type_name[0] == '$') type_name = "Globals";
+      glsl.set_name(ub.base_type_id, type_name + suffix);
+      glsl.set_name(ub.id, "u" + std::string(suffix));
+    }
+    return glsl.compile();
+  } catch (const std::exception& e) {
+    return fail("cross-compile", std::string("SPIRV-Cross: ") + e.what());
+  }
+}
+
+}  // namespace shaderbed

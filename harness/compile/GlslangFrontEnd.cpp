@@ -1,0 +1,113 @@
+#include "compile/GlslangFrontEnd.h"
+
+#include <mutex>
+#include <regex>
+#include <sstream>
+
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+#include <glslang/SPIRV/GlslangToSpv.h>
+
+namespace shaderbed {
+namespace {
+
+void initialise_glslang_once() {
+  static std::once_flag once;
+  std::call_once(once, [] { glslang::InitializeProcess(); });
+}
+
+EShLanguage to_glslang(Stage stage) { return stage == Stage::vertex ? EShLangVertex : EShLangFragment; }
+
+// DX9 HLSL as the book writes it: POSITION is the clip-space output of a vertex shader,
+// which glslang only knows as SV_Position (without this it becomes a plain varying).
+// A vertex shader's SV_Position *input* stays an ordinary attribute, and a pixel
+// shader's becomes the fragment coordinate, as VPOS was.
+constexpr const char* kHlslPreamble =
+    "#define POSITION SV_Position\n"
+    "#define SHADERBED 1\n";
+
+// glslang's info log: "ERROR: file:LINE: message" (possibly several). Take the first
+// error and keep the rest in the message so nothing is lost.
+Error parse_info_log(const std::string& log, const std::string& path, const char* what) {
+  static const std::regex first_error(R"((?:ERROR|error): ([^:\n]*):(\d+): ([^\n]*))");
+  Error e{.message = std::string(what) + " failed", .file = path, .stage = "compile"};
+  std::smatch m;
+  if (std::regex_search(log, m, first_error)) {
+    e.line = std::stoi(m[2].str());
+    e.message = m[3].str();
+    // Count the other errors so a cascade is visible without flooding the line.
+    int total = 0;
+    for (auto it = std::sregex_iterator(log.begin(), log.end(), first_error); it != std::sregex_iterator(); ++it)
+      ++total;
+    if (total > 1) e.message += " (+" + std::to_string(total - 1) + " more errors)";
+  } else if (!log.empty()) {
+    std::string first_line = log.substr(0, log.find('\n'));
+    e.message += ": " + first_line;
+  }
+  return e;
+}
+
+}  // namespace
+
+Result<std::vector<uint32_t>> glslang_to_spirv(Language language, const ShaderSource& source, Target target) {
+  initialise_glslang_once();
+  const EShLanguage stage = to_glslang(source.stage);
+  const bool hlsl = language != Language::glsl;
+
+  glslang::TShader shader(stage);
+  const char* text = source.text.c_str();
+  const int length = static_cast<int>(source.text.size());
+  const char* name = source.path.c_str();
+  shader.setStringsWithLengthsAndNames(&text, &length, &name, 1);
+  shader.setEntryPoint(source.entry_point.c_str());
+  shader.setSourceEntryPoint(source.entry_point.c_str());
+
+  const glslang::EShClient client = target == Target::vulkan ? glslang::EShClientVulkan : glslang::EShClientOpenGL;
+  shader.setEnvInput(hlsl ? glslang::EShSourceHlsl : glslang::EShSourceGlsl, stage, client, 100);
+  if (target == Target::vulkan)
+    shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_0);
+  else
+    shader.setEnvClient(glslang::EShClientOpenGL, glslang::EShTargetOpenGL_450);
+  shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
+
+  int messages = EShMsgSpvRules;
+  if (target == Target::vulkan) messages |= EShMsgVulkanRules;
+  if (hlsl) {
+    messages |= EShMsgReadHlsl | EShMsgHlslOffsets | EShMsgHlslDX9Compatible | EShMsgHlslLegalization;
+    shader.setPreamble(kHlslPreamble);
+    shader.setHlslIoMapping(true);
+    // Keep semantics (POSITION, NORMAL, TEXCOORDn) in the SPIR-V so vertex inputs can be
+    // matched to mesh attributes by meaning, not by declaration order.
+    shader.setEnvTargetHlslFunctionality1();
+  }
+  // Resources without explicit bindings get distinct per-stage bindings (see header).
+  shader.setAutoMapBindings(true);
+  shader.setAutoMapLocations(true);
+  if (source.stage == Stage::fragment) {
+    for (auto res : {glslang::EResSampler, glslang::EResTexture, glslang::EResImage, glslang::EResUbo,
+                     glslang::EResSsbo, glslang::EResUav})
+      shader.setShiftBinding(res, kFragmentBindingBase);
+  }
+
+  const auto msgs = static_cast<EShMessages>(messages);
+  if (!shader.parse(GetDefaultResources(), 100, false, msgs))
+    return std::unexpected(parse_info_log(shader.getInfoLog(), source.path, "parse"));
+
+  glslang::TProgram program;
+  program.addShader(&shader);
+  if (!program.link(msgs)) return std::unexpected(parse_info_log(program.getInfoLog(), source.path, "link"));
+  if (!program.mapIO()) return std::unexpected(parse_info_log(program.getInfoLog(), source.path, "I/O mapping"));
+
+  std::vector<uint32_t> spirv;
+  spv::SpvBuildLogger logger;
+  glslang::SpvOptions options;
+  options.disableOptimizer = !hlsl;   // HLSL needs glslang's legalisation passes
+  options.validate = false;           // we run spirv-val ourselves with the right env
+  glslang::GlslangToSpv(*program.getIntermediate(stage), spirv, &logger, &options);
+  const std::string log = logger.getAllMessages();
+  if (spirv.empty())
+    return std::unexpected(Error{.message = "SPIR-V generation failed: " + log, .file = source.path, .stage = "compile"});
+  return spirv;
+}
+
+}  // namespace shaderbed

@@ -1,0 +1,81 @@
+#include "compile/SpirvReflection.h"
+
+#include <algorithm>
+
+#include <spirv_cross/spirv_cross.hpp>
+
+namespace shaderbed {
+namespace {
+
+UniformMember reflect_member(const spirv_cross::Compiler& c, const spirv_cross::SPIRType& block, uint32_t i,
+                             Language language) {
+  const spirv_cross::SPIRType& t = c.get_type(block.member_types[i]);
+  UniformMember m;
+  m.name = c.get_member_name(block.self, i);
+  m.offset = c.type_struct_member_offset(block, i);
+  m.size = static_cast<uint32_t>(c.get_declared_struct_member_size(block, i));
+  m.is_float = t.basetype == spirv_cross::SPIRType::Float;
+  m.vecsize = t.vecsize;
+  m.columns = t.columns;
+  if (t.columns > 1) {
+    m.matrix_stride = c.type_struct_member_matrix_stride(block, i);
+    const bool row_major = c.has_member_decoration(block.self, i, spv::DecorationRowMajor);
+    // glslang gives an HLSL matrix the transposed SPIR-V type, so HLSL's column_major
+    // packing appears as RowMajor: registers still hold columns of the HLSL matrix.
+    m.column_registers = language == Language::glsl ? !row_major : row_major;
+    if (language != Language::glsl) std::swap(m.vecsize, m.columns);
+  }
+  if (!t.array.empty()) {
+    m.array_size = t.array[0];
+    m.array_stride = c.type_struct_member_array_stride(block, i);
+  }
+  return m;
+}
+
+}  // namespace
+
+Result<Reflection> reflect_spirv(const std::vector<uint32_t>& spirv, Language language, Stage stage) {
+  try {
+    spirv_cross::Compiler c(spirv);
+    const spirv_cross::ShaderResources res = c.get_shader_resources();
+    Reflection r;
+    for (const spirv_cross::Resource& ub : res.uniform_buffers) {
+      const spirv_cross::SPIRType& type = c.get_type(ub.base_type_id);
+      UniformBlock block;
+      block.name = c.get_name(ub.base_type_id);
+      if (block.name.empty()) block.name = ub.name;
+      block.set = c.get_decoration(ub.id, spv::DecorationDescriptorSet);
+      block.binding = c.get_decoration(ub.id, spv::DecorationBinding);
+      block.size = static_cast<uint32_t>(c.get_declared_struct_size(type));
+      for (uint32_t i = 0; i < type.member_types.size(); ++i)
+        block.members.push_back(reflect_member(c, type, i, language));
+      r.uniform_blocks.push_back(std::move(block));
+    }
+    if (stage == Stage::vertex) {
+      for (const spirv_cross::Resource& in : res.stage_inputs) {
+        StageInput input;
+        input.location = c.get_decoration(in.id, spv::DecorationLocation);
+        input.name = c.get_name(in.id);
+        input.semantic = c.get_decoration_string(in.id, spv::DecorationHlslSemanticGOOGLE);
+        input.components = c.get_type(in.type_id).vecsize;
+        r.inputs.push_back(std::move(input));
+      }
+      std::sort(r.inputs.begin(), r.inputs.end(),
+                [](const StageInput& a, const StageInput& b) { return a.location < b.location; });
+    }
+    for (const spirv_cross::Resource& s : res.sampled_images) {
+      const spirv_cross::SPIRType& t = c.get_type(s.type_id);
+      SamplerBinding sb;
+      sb.name = s.name;
+      sb.set = c.get_decoration(s.id, spv::DecorationDescriptorSet);
+      sb.binding = c.get_decoration(s.id, spv::DecorationBinding);
+      sb.dimensions = t.image.dim == spv::Dim1D ? 1 : t.image.dim == spv::Dim3D ? 3 : 2;
+      r.samplers.push_back(std::move(sb));
+    }
+    return r;
+  } catch (const std::exception& e) {
+    return fail("reflect", std::string("SPIRV-Cross reflection failed: ") + e.what());
+  }
+}
+
+}  // namespace shaderbed

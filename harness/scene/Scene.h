@@ -1,0 +1,46 @@
+#pragma once
+// The book's scene (lights-and-brdfs.md §5.3): object at the origin, eye at
+// (-100, 50, 0) looking at it with +Y up (left-handed, as D3DXMatrixLookAtLH), a
+// directional light from +Y and a point light at (0, 50, 0). Lights and eye are moved
+// into object space with the inverse world matrix: positions with w = 1, directions
+// with w = 0 (the book's w = 0 for positions is an erratum).
+#include <map>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace shaderbed {
+
+struct Camera {
+  glm::dvec3 eye{-100, 50, 0};
+  glm::dvec3 target{0, 0, 0};
+  glm::dvec3 up{0, 1, 0};
+  double fovy_degrees = 45;
+  double near_plane = 1;
+  double far_plane = 1000;
+};
+
+struct Lights {
+  glm::dvec3 direction{0, 1, 0};   // toward the directional light
+  glm::dvec3 position{0, 50, 0};   // point light
+};
+
+struct SceneSetup {
+  Camera camera;
+  Lights lights;
+  glm::dmat4 world{1.0};
+  int width = 256;
+  int height = 256;
+};
+
+// The quantities a shader can bind by name: "transform" (W*V*P as M in clip = M v,
+// depth in [0, 1]), "world", "light_vector" (object space, unit, w = 0),
+// "light_position" and "eye_position" (object space, w = 1).
+using NamedValues = std::map<std::string, std::vector<float>>;
+NamedValues scene_quantities(const SceneSetup& scene);
+
+glm::dmat4 view_matrix(const Camera&);
+glm::dmat4 projection_matrix(const Camera&, double aspect);
+
+}  // namespace shaderbed

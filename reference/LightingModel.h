@@ -1,0 +1,40 @@
+#pragma once
+// The interface every lighting model implements, and what it is given. A model is built
+// once from its parameters (so a missing parameter is an error before any rendering)
+// and then evaluated per vertex or per pixel. Everything is in object space, as in the
+// book's shaders: the normal is never transformed; lights and eye are moved instead.
+#include <expected>
+#include <memory>
+#include <string>
+
+#include <glm/glm.hpp>
+
+namespace reference {
+
+// A point on the surface, in object space.
+struct SurfacePoint {
+  glm::dvec3 position;
+  glm::dvec3 normal;   // unit length
+  glm::dvec3 tangent;  // as given or interpolated, not normalised: models that need it do
+  glm::dvec2 uv;
+};
+
+// The scene's lights and eye, moved into object space by the inverse world matrix.
+// Models choose which light they use: the directional light (Lambert, Phong), the point
+// light (attenuation, Warn spotlights), or both.
+struct ObjectSpaceLighting {
+  glm::dvec3 light_direction;  // unit vector toward the directional light
+  glm::dvec3 light_position;   // point light position
+  glm::dvec3 eye_position;
+};
+
+class LightingModel {
+ public:
+  virtual ~LightingModel() = default;
+  // Outgoing colour, unclamped: a model that exceeds 1 must be seen to do so.
+  virtual glm::dvec3 shade(const SurfacePoint& point, const ObjectSpaceLighting& lighting) const = 0;
+};
+
+using ModelOrError = std::expected<std::unique_ptr<const LightingModel>, std::string>;
+
+}  // namespace reference

@@ -1,0 +1,26 @@
+// Phong, per vertex (book §5.6.2, §7.2.1): D max(0,N.L) + S max(0,R.V)^n, specular not gated by N.L as in the book.
+#version 450
+
+layout(location = 0) in vec3 position;
+layout(location = 1) in vec3 normal;
+
+layout(std140, binding = 0) uniform PhongVertex {
+    mat4 modelViewProjection;
+    vec3 lightDirection;   // object space, unit, toward the light
+    vec3 eyePosition;      // object space
+    vec3 diffuseColor;
+    vec3 specularColor;
+    float specularPower;
+};
+
+layout(location = 0) out vec3 vertexColor;
+
+void main()
+{
+    vec3 toEye = normalize(eyePosition - position);
+    vec3 r = reflect(-lightDirection, normal);
+    vec3 diffuse = diffuseColor * max(dot(normal, lightDirection), 0.0);
+    vec3 specular = specularColor * pow(max(dot(r, toEye), 0.0), specularPower);
+    vertexColor = diffuse + specular;
+    gl_Position = modelViewProjection * vec4(position, 1.0);
+}

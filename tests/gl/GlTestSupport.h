@@ -1,0 +1,46 @@
+#pragma once
+// Shared pieces of the GL backend tests: one real OSMesa backend per test binary, a
+// resolver backed by a name -> values map, NDC-space meshes, and small shader pairs
+// compiled by the real compile stage.
+#include <map>
+#include <string>
+#include <vector>
+
+#include "backends/Backend.h"
+
+namespace shaderbed::gl_test {
+
+// The process-wide GL backend, created on first use; the error when OSMesa is unusable.
+Result<Backend*> gl_backend();
+
+// Values by member name; anything else is a "no value" error that deliberately does not
+// name the member, so the tests can see the backend add that context.
+class MapResolver final : public UniformResolver {
+ public:
+  MapResolver() = default;
+  explicit MapResolver(std::map<std::string, std::vector<float>> values) : values_(std::move(values)) {}
+  Result<std::vector<float>> value(const UniformBlock& block, const UniformMember& member) const override;
+
+ private:
+  std::map<std::string, std::vector<float>> values_;
+};
+
+// Two triangles covering x0..x1, y0..y1 in NDC at depth z, with normals (0,0,1) and uv.
+Mesh ndc_rectangle(float x0, float y0, float x1, float y1, float z = 0.5f);
+
+// GLSL 450 vertex + fragment through the real compile stage (all three GL forms).
+Result<CompiledProgram> compile_glsl(const std::string& vertex, const std::string& fragment);
+
+// Only the native-GLSL form, for shaders the SPIR-V front ends reject on purpose (loose
+// uniforms, syntax errors) or that must reach Mesa's compiler untouched.
+CompiledProgram native_glsl_only(const std::string& vertex, const std::string& fragment,
+                                 const std::string& vertex_file = "test.vert",
+                                 const std::string& fragment_file = "test.frag");
+
+// A vertex shader that passes NDC positions through.
+extern const char* const kPassThroughVertex;
+
+// Covered pixels of an image.
+int coverage_count(const Image& image);
+
+}  // namespace shaderbed::gl_test

@@ -1,0 +1,98 @@
+// Case files: the library's cases load; malformed ones fail with file, line and column.
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "scene/CaseFile.h"
+
+namespace shaderbed {
+namespace {
+
+namespace fs = std::filesystem;
+const fs::path kCases = fs::path(SHADERBED_SOURCE_DIR) / "shaders" / "cases";
+
+// Writes a case into a temporary shaders/cases tree that can see the real shader files.
+class TempCase : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    root_ = fs::temp_directory_path() / ("shaderbed_case_test_" + std::to_string(::getpid()));
+    fs::create_directories(root_ / "cases");
+    fs::create_directory_symlink(kCases.parent_path() / "glsl", root_ / "glsl");
+  }
+  void TearDown() override { fs::remove_all(root_); }
+  std::string write(const std::string& text) {
+    const fs::path p = root_ / "cases" / "probe.toml";
+    std::ofstream(p) << text;
+    return p.string();
+  }
+  fs::path root_;
+};
+
+TEST(CaseFile, LibraryCasesLoad) {
+  auto cases = load_cases(kCases.string());
+  ASSERT_TRUE(cases) << cases.error().to_string();
+  ASSERT_GE(cases->size(), 3u);
+  for (const Case& c : *cases) {
+    EXPECT_FALSE(c.interior.reason.empty()) << c.name;
+    EXPECT_FALSE(c.variants.empty()) << c.name;
+    for (const Variant& v : c.variants) EXPECT_TRUE(v.shaders.contains(Language::glsl)) << c.name << "/" << v.name;
+  }
+}
+
+TEST_F(TempCase, SyntaxErrorHasLineAndColumn) {
+  auto c = load_case(write("model = \"lambert\"\n\n[params]\ndiffuse = [1 1]\npower = 7\n"));
+  ASSERT_FALSE(c);
+  EXPECT_EQ(c.error().line, 4);
+  EXPECT_GT(c.error().column, 0);
+  EXPECT_NE(c.error().file.find("probe.toml"), std::string::npos);
+}
+
+TEST_F(TempCase, BadValueIsReportedWhereItIs) {
+  auto c = load_case(write("model = \"lambert\"\n"
+                           "[params]\n"
+                           "diffuse = \"white\"\n"));
+  ASSERT_FALSE(c);
+  EXPECT_EQ(c.error().line, 3);
+  EXPECT_NE(c.error().message.find("diffuse"), std::string::npos);
+}
+
+TEST_F(TempCase, ToleranceWithoutReasonIsRefused) {
+  auto c = load_case(write("model = \"lambert\"\n"
+                           "[variants.pixel]\n"
+                           "glsl = { vertex = \"glsl/setup.vert\", fragment = \"glsl/lambert.frag\" }\n"
+                           "[tolerance]\n"
+                           "interior = { max_abs = 1e-4 }\n"
+                           "silhouette = { max_abs = 1e-2, reason = \"edges\" }\n"));
+  ASSERT_FALSE(c);
+  EXPECT_EQ(c.error().line, 5);
+  EXPECT_NE(c.error().message.find("reason"), std::string::npos);
+}
+
+TEST_F(TempCase, MissingShaderFileIsNamed) {
+  auto c = load_case(write("model = \"lambert\"\n"
+                           "[variants.pixel]\n"
+                           "glsl = { vertex = \"glsl/nope.vert\", fragment = \"glsl/lambert.frag\" }\n"));
+  ASSERT_FALSE(c);
+  EXPECT_EQ(c.error().line, 3);
+  EXPECT_NE(c.error().message.find("nope.vert"), std::string::npos);
+}
+
+TEST_F(TempCase, MinimalCaseLoads) {
+  auto c = load_case(write("model = \"lambert\"\n"
+                           "[params]\ndiffuse = [1, 0.5, 0.25]\n"
+                           "[variants.pixel]\n"
+                           "glsl = { vertex = \"glsl/setup.vert\", fragment = \"glsl/lambert.frag\" }\n"
+                           "[bindings.glsl]\nmodelViewProjection = \"transform\"\nspec = [\"a\", \"b\"]\n"
+                           "[tolerance]\n"
+                           "interior = { max_abs = 1e-4, reason = \"fp32\" }\n"
+                           "silhouette = { max_abs = 1e-2, reason = \"edges\" }\n"));
+  ASSERT_TRUE(c) << c.error().to_string();
+  EXPECT_EQ(c->model, "lambert");
+  EXPECT_EQ(c->params.at("diffuse"), (std::vector<double>{1, 0.5, 0.25}));
+  EXPECT_EQ(c->variants[0].mode, LightingMode::per_pixel);
+  EXPECT_EQ(c->bindings.at(Language::glsl).at("spec"), (std::vector<std::string>{"a", "b"}));
+}
+
+}  // namespace
+}  // namespace shaderbed
