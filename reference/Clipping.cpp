@@ -52,7 +52,8 @@ ClipPolygon clip_triangle(const std::array<ClipVertex, 3>& triangle, double guar
   for (const ClipVertex& vertex : triangle) polygon.vertices[polygon.size++] = vertex;
   for (const ClipPlane& plane : planes) {
     bool all_inside = true;
-    for (int i = 0; i < polygon.size; ++i) all_inside = all_inside && distance(plane, polygon.vertices[i].position) >= 0;
+    for (int i = 0; i < polygon.size; ++i)
+      all_inside = all_inside && distance(plane, polygon.vertices[i].position) >= 0;
     if (all_inside) continue;
     polygon = clip_against(polygon, plane);
     if (polygon.size < 3) return {};

@@ -1,7 +1,6 @@
 #pragma once
 // Homogeneous clipping, before the perspective divide.
 #include <array>
-
 #include <glm/glm.hpp>
 
 namespace reference {

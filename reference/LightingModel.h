@@ -4,10 +4,9 @@
 // and then evaluated per vertex or per pixel. Everything is in object space, as in the
 // book's shaders: the normal is never transformed; lights and eye are moved instead.
 #include <expected>
+#include <glm/glm.hpp>
 #include <memory>
 #include <string>
-
-#include <glm/glm.hpp>
 
 namespace reference {
 

@@ -8,8 +8,8 @@ ObjectSpaceLighting to_object_space(const Lights& lights, const Camera& camera, 
     const glm::dvec4 object = world_to_object * glm::dvec4(p, 1.0);
     return glm::dvec3(object) / object.w;  // w stays 1 for an affine world matrix
   };
-  return {glm::normalize(glm::dvec3(world_to_object * glm::dvec4(lights.direction, 0.0))),
-          position(lights.position), position(camera.eye)};
+  return {glm::normalize(glm::dvec3(world_to_object * glm::dvec4(lights.direction, 0.0))), position(lights.position),
+          position(camera.eye)};
 }
 
 }  // namespace reference

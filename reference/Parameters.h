@@ -1,12 +1,11 @@
 #pragma once
 // Reads a model's parameters by name and collects every problem, so one error message
 // names the model and all the parameters it is missing.
+#include <glm/glm.hpp>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "reference/Reference.h"
 

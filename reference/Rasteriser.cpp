@@ -18,7 +18,7 @@ constexpr int64_t fixed_half = fixed_one / 2;
 constexpr double guard_band_pixels = 1 << 20;
 
 struct WindowVertex {
-  glm::dvec2 position;      // unsnapped, pixels, y down: used for interpolation
+  glm::dvec2 position;       // unsnapped, pixels, y down: used for interpolation
   int64_t x_fixed, y_fixed;  // snapped to 1/256 pixel: used for coverage
   double depth;
   double inv_w;
@@ -29,8 +29,12 @@ WindowVertex to_window(const ClipVertex& vertex, int width, int height) {
   const glm::dvec3 window = window_position(vertex.position, width, height);
   const double inv_w = 1.0 / vertex.position.w;
   // Round to nearest even, as llvmpipe's lrintf-based snap does.
-  return {glm::dvec2(window), static_cast<int64_t>(std::nearbyint(window.x * fixed_one)),
-          static_cast<int64_t>(std::nearbyint(window.y * fixed_one)), window.z, inv_w, vertex.weights * inv_w};
+  return {glm::dvec2(window),
+          static_cast<int64_t>(std::nearbyint(window.x * fixed_one)),
+          static_cast<int64_t>(std::nearbyint(window.y * fixed_one)),
+          window.z,
+          inv_w,
+          vertex.weights * inv_w};
 }
 
 int64_t floor_div(int64_t numerator, int64_t denominator) {
@@ -105,8 +109,8 @@ void rasterise_triangle(std::array<WindowVertex, 3> v, uint32_t triangle, Visibi
             screen_weights[0] * v[0].depth + screen_weights[1] * v[1].depth + screen_weights[2] * v[2].depth;
         VisibleSample& sample = buffer.samples[static_cast<size_t>(y) * buffer.width + x];
         if (depth < sample.depth) {
-          const double inv_w = screen_weights[0] * v[0].inv_w + screen_weights[1] * v[1].inv_w +
-                               screen_weights[2] * v[2].inv_w;
+          const double inv_w =
+              screen_weights[0] * v[0].inv_w + screen_weights[1] * v[1].inv_w + screen_weights[2] * v[2].inv_w;
           sample.triangle = triangle;
           sample.depth = depth;
           sample.weights = (screen_weights[0] * v[0].weights_over_w + screen_weights[1] * v[1].weights_over_w +

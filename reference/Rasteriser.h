@@ -12,10 +12,9 @@
 // the caller shades each covered pixel once; with a side-effect-free shader that equals
 // shading every fragment that passes the depth test in submission order.
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <span>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 namespace reference {
 

@@ -73,11 +73,11 @@ std::expected<Framebuffer, std::string> render(const Scene& scene, const std::st
 
   const Mesh& mesh = scene.mesh;
   const double aspect = double(scene.width) / scene.height;
-  const glm::dmat4 object_to_clip =
-      projection_matrix(scene.camera, aspect) * view_matrix(scene.camera) * scene.world;
+  const glm::dmat4 object_to_clip = projection_matrix(scene.camera, aspect) * view_matrix(scene.camera) * scene.world;
   std::vector<glm::dvec4> clip_positions;
   clip_positions.reserve(mesh.vertices.size());
-  for (const Vertex& vertex : mesh.vertices) clip_positions.push_back(object_to_clip * glm::dvec4(vertex.position, 1.0));
+  for (const Vertex& vertex : mesh.vertices)
+    clip_positions.push_back(object_to_clip * glm::dvec4(vertex.position, 1.0));
 
   const VisibilityBuffer visibility = rasterise(clip_positions, mesh.indices, scene.width, scene.height);
   const ObjectSpaceLighting lighting = to_object_space(scene.lights, scene.camera, scene.world);
@@ -92,9 +92,8 @@ std::expected<Framebuffer, std::string> render(const Scene& scene, const std::st
     if (!sample.covered()) continue;
     const size_t first = size_t{sample.triangle} * 3;
     const std::array<uint32_t, 3> corners{mesh.indices[first], mesh.indices[first + 1], mesh.indices[first + 2]};
-    const glm::dvec3 colour = mode == Mode::per_vertex
-                                  ? interpolate(corners, sample.weights, vertex_colours)
-                                  : shade_pixel(mesh, corners, sample.weights, **model, lighting);
+    const glm::dvec3 colour = mode == Mode::per_vertex ? interpolate(corners, sample.weights, vertex_colours)
+                                                       : shade_pixel(mesh, corners, sample.weights, **model, lighting);
     image.rgba[pixel * 4 + 0] = colour.r;
     image.rgba[pixel * 4 + 1] = colour.g;
     image.rgba[pixel * 4 + 2] = colour.b;

@@ -47,6 +47,8 @@ CompiledProgram native_glsl_only(const std::string& vertex, const std::string& f
   program.vertex.source_file = vertex_file;
   program.fragment.stage = Stage::fragment;
   program.fragment.source_file = fragment_file;
+  program.vertex_gl = program.vertex;
+  program.fragment_gl = program.fragment;
   program.vertex_native_glsl = vertex;
   program.fragment_native_glsl = fragment;
   return program;

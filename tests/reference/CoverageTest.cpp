@@ -41,7 +41,8 @@ TEST(Coverage, RightTriangleWithLegsOnPixelBoundaries) {
 
 TEST(Coverage, BothWindingsCoverTheSamePixels) {
   EXPECT_EQ(triangle_coverage({2, 2}, {10, 2}, {2, 10}), triangle_coverage({2, 2}, {2, 10}, {10, 2}));
-  EXPECT_EQ(triangle_coverage({1.3, 0.7}, {13.1, 5.2}, {4.4, 14.9}), triangle_coverage({4.4, 14.9}, {13.1, 5.2}, {1.3, 0.7}));
+  EXPECT_EQ(triangle_coverage({1.3, 0.7}, {13.1, 5.2}, {4.4, 14.9}),
+            triangle_coverage({4.4, 14.9}, {13.1, 5.2}, {1.3, 0.7}));
 }
 
 // Edges through pixel centres: the top edge (row 2) and left edge (column 2) are in.

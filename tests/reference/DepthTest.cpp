@@ -14,8 +14,8 @@ constexpr int size = 16;
 
 std::vector<glm::dvec4> two_overlapping_triangles(double first_depth, double second_depth) {
   using testing::clip_from_window;
-  return {clip_from_window(1, 1, size, size, first_depth), clip_from_window(15, 1, size, size, first_depth),
-          clip_from_window(1, 15, size, size, first_depth), clip_from_window(3, 3, size, size, second_depth),
+  return {clip_from_window(1, 1, size, size, first_depth),    clip_from_window(15, 1, size, size, first_depth),
+          clip_from_window(1, 15, size, size, first_depth),   clip_from_window(3, 3, size, size, second_depth),
           clip_from_window(15, 15, size, size, second_depth), clip_from_window(1, 15, size, size, second_depth)};
 }
 

@@ -29,9 +29,9 @@ void expect_vector(const glm::dvec3& actual, const glm::dvec3& expected) {
 TEST(Matrices, AgreeWithGlmLeftHandedZeroToOne) {
   const Camera camera;
   expect_matrix(view_matrix(camera), glm::lookAtLH(camera.eye, camera.target, camera.up));
-  expect_matrix(projection_matrix(camera, 4.0 / 3.0),
-                glm::perspectiveLH_ZO(glm::radians(camera.fovy_degrees), 4.0 / 3.0, camera.near_plane,
-                                      camera.far_plane));
+  expect_matrix(
+      projection_matrix(camera, 4.0 / 3.0),
+      glm::perspectiveLH_ZO(glm::radians(camera.fovy_degrees), 4.0 / 3.0, camera.near_plane, camera.far_plane));
 }
 
 TEST(Matrices, TargetAtImageCentreUpIsRowZeroDepthRangeIsZeroToOne) {

@@ -108,8 +108,7 @@ TEST(Models, MalformedParameterIsAnError) {
   ASSERT_FALSE(two_component_colour);
   EXPECT_NE(two_component_colour.error().find("lambert: parameter 'diffuse'"), std::string::npos);
 
-  const auto vector_power =
-      make_model("phong", {{"diffuse", {1, 1, 1}}, {"specular", {1, 1, 1}}, {"power", {7, 8}}});
+  const auto vector_power = make_model("phong", {{"diffuse", {1, 1, 1}}, {"specular", {1, 1, 1}}, {"power", {7, 8}}});
   ASSERT_FALSE(vector_power);
   EXPECT_NE(vector_power.error().find("'power'"), std::string::npos);
 }

@@ -61,8 +61,8 @@ TEST(Perspective, InterpolatedPositionIsTheRayHitOnATiltedQuad) {
   camera.target = {0, 0, 0};
   const double s = std::sin(glm::radians(60.0)), c = std::cos(glm::radians(60.0));
   const glm::dvec3 along(0, c * 8, s * 8);  // from the quad's near edge to its far edge
-  const std::vector<glm::dvec3> world{{-3, -3, -4}, {3, -3, -4}, glm::dvec3(-3, -3, -4) + along,
-                                      glm::dvec3(3, -3, -4) + along};
+  const std::vector<glm::dvec3> world{
+      {-3, -3, -4}, {3, -3, -4}, glm::dvec3(-3, -3, -4) + along, glm::dvec3(3, -3, -4) + along};
   const std::vector<uint32_t> indices{0, 1, 2, 1, 3, 2};
   const glm::dvec3 normal = glm::normalize(glm::cross(world[1] - world[0], world[2] - world[0]));
   const Projected projected = project(camera, world);

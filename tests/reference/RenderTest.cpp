@@ -5,9 +5,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <numbers>
-
 #include <glm/ext/matrix_transform.hpp>
+#include <numbers>
 
 #include "PixelRays.h"
 #include "reference/Reference.h"
@@ -104,8 +103,8 @@ class ShadingAgainstRayHits : public ::testing::Test {
     scene.height = 64;
     scene.camera.eye = {-30, 40, -10};
     scene.camera.target = {0, 0, 0};
-    scene.world = glm::rotate(glm::translate(glm::dmat4(1.0), glm::dvec3(2, -1, 3)), glm::radians(90.0),
-                              glm::dvec3(0, 0, 1));
+    scene.world =
+        glm::rotate(glm::translate(glm::dmat4(1.0), glm::dvec3(2, -1, 3)), glm::radians(90.0), glm::dvec3(0, 0, 1));
     scene.lights.direction = glm::normalize(glm::dvec3(0.3, 1, 0.2));
     const std::array<glm::dvec3, 3> positions{{{-2, -20, -20}, {1, 20, -5}, {3, 0, 25}}};
     const std::array<glm::dvec3, 3> normals{{{1, 0, 0}, {0.6, 0.8, 0}, {0.3, -0.3, 0.9}}};  // not all unit
@@ -169,6 +168,9 @@ TEST_F(ShadingAgainstRayHits, PerPixelShadesTheNormalisedInterpolatedNormal) {
 // Budget: well under 50 ms for ~4000 triangles at 256x256. The fastest of a few runs
 // is measured, so a loaded machine (other builds, parallel tests) does not fail it.
 TEST(Render, FourThousandTrianglesAt256SquaredIsFast) {
+#ifndef NDEBUG
+  GTEST_SKIP() << "timing is only meaningful in an optimised build";
+#endif
   const Scene scene = sphere_scene();
   for (Mode mode : {Mode::per_vertex, Mode::per_pixel}) {
     double fastest = 1e9;

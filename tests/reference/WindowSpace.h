@@ -3,10 +3,9 @@
 // can be worked out by hand. With w = 1 the clip position is the NDC position, and for
 // the power-of-two image sizes used here the mapping back to window space is exact.
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <span>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "reference/Rasteriser.h"
 

@@ -109,7 +109,7 @@ Result<const GlRenderTarget*> GlRenderer::target_of_size(int width, int height) 
 void GlRenderer::set_fixed_function_state() const {
   // Projection matrices are D3D/Vulkan style (z in [0, 1]); origin stays lower-left and
   // the readback flips rows instead.
-  gl_.ClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+  gl_.ClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
   gl_.DepthRange(0.0, 1.0);
   gl_.Enable(GL_DEPTH_TEST);
   gl_.DepthFunc(GL_LESS);

@@ -1,0 +1,119 @@
+// End to end on the real drivers: the default suite passes on every backend and GL
+// path, a planted bug fails, and the CLI's exit codes and JSON are what CI relies on.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <tuple>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "cli/run/Runner.h"
+
+namespace shaderbed {
+namespace {
+
+namespace fs = std::filesystem;
+const fs::path kSource = SHADERBED_SOURCE_DIR;
+
+// Runs the CLI; returns the exit status and stdout+stderr.
+std::pair<int, std::string> shaderbed_cli(const std::string& args) {
+  const std::string cmd = std::string(SHADERBED_BINARY) + " " + args + " 2>&1";
+  std::string out;
+  FILE* p = popen(cmd.c_str(), "r");
+  char buf[4096];
+  while (size_t n = fread(buf, 1, sizeof buf, p)) out.append(buf, n);
+  const int status = pclose(p);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+TEST(EndToEnd, DefaultSuitePassesOnEveryBackendAndGlPath) {
+  auto report = run_suite(RunOptions{});
+  ASSERT_TRUE(report) << report.error().to_string();
+  std::set<std::tuple<std::string, std::string, std::string>> language_backend_path;
+  std::set<std::string> cases, shapes;
+  for (const CellResult& r : report->results) {
+    EXPECT_EQ(r.status, "pass") << r.case_name << " " << r.variant << " " << r.language << " " << r.backend << "/"
+                                << r.path << " " << r.shape << ": " << r.message;
+    language_backend_path.insert({r.language, r.backend, r.path});
+    cases.insert(r.case_name);
+    shapes.insert(r.shape);
+    EXPECT_GT(r.metrics.interior_pixels, 1000u) << "a blank or tiny image would compare trivially";
+  }
+  // GLSL runs on Vulkan and all three GL paths; HLSL everywhere but native GLSL.
+  const std::set<std::tuple<std::string, std::string, std::string>> expected{
+      {"glsl", "vulkan", "spirv"}, {"glsl", "gl", "glsl"}, {"glsl", "gl", "spirv"}, {"glsl", "gl", "cross"},
+      {"hlsl", "vulkan", "spirv"}, {"hlsl", "gl", "spirv"}, {"hlsl", "gl", "cross"}};
+  EXPECT_EQ(language_backend_path, expected);
+  EXPECT_TRUE(cases.contains("ambient") && cases.contains("lambert") && cases.contains("phong"));
+  EXPECT_EQ(shapes.size(), 4u);
+}
+
+TEST(EndToEnd, PlantedReflectionSignBugFailsEveryCell) {
+  RunOptions o;
+  o.cases_dir = (kSource / "tests" / "mutants" / "cases").string();
+  o.cases = {"phong_reflect_sign"};
+  auto report = run_suite(o);
+  ASSERT_TRUE(report) << report.error().to_string();
+  ASSERT_FALSE(report->results.empty());
+  for (const CellResult& r : report->results) {
+    EXPECT_EQ(r.status, "fail") << r.language << " " << r.backend << "/" << r.path << " " << r.shape;
+    EXPECT_GT(r.metrics.max_abs, 100 * r.interior_threshold) << "the misplaced highlight is no rounding error";
+  }
+}
+
+TEST(EndToEnd, CliPassesWritesJsonAndImages) {
+  const fs::path dir = fs::temp_directory_path() / ("shaderbed_cli_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  const fs::path json = dir / "r.json";
+  auto [status, out] = shaderbed_cli("run --case lambert --shape cube,torus --backend vulkan --backend gl --size 64 --out " +
+                                     dir.string() + " --json " + json.string());
+  EXPECT_EQ(status, 0) << out;
+  EXPECT_NE(out.find("lambert"), std::string::npos);
+  std::ifstream in(json);
+  ASSERT_TRUE(in) << out;
+  const nlohmann::json j = nlohmann::json::parse(in);
+  for (const char* key : {"glslang", "spirv_tools", "spirv_cross", "mesa"}) EXPECT_TRUE(j["tool"].contains(key)) << key;
+  EXPECT_NE(j["tool"]["mesa"]["vulkan"].get<std::string>().find("Mesa"), std::string::npos);
+  // 2 variants x 2 languages x 2 shapes x (GLSL: 4 paths, HLSL: 3 paths) / 2 languages.
+  ASSERT_EQ(j["results"].size(), 2u * 2u * (4u + 3u));
+  for (const auto& r : j["results"]) {
+    for (const char* key : {"case", "variant", "language", "backend", "path", "shape", "status", "metrics", "time_ms"})
+      EXPECT_TRUE(r.contains(key)) << key;
+    for (const char* key : {"max_abs", "rmse", "psnr", "bad_pixels", "nonfinite"})
+      EXPECT_TRUE(r["metrics"].contains(key)) << key;
+    EXPECT_EQ(r["status"], "pass");
+    EXPECT_TRUE(fs::exists(r["image"].get<std::string>()));
+  }
+  EXPECT_TRUE(fs::exists(dir / "lambert" / "pixel" / "cube" / "reference.exr"));
+  EXPECT_TRUE(fs::exists(dir / "lambert" / "pixel" / "cube" / "hlsl-gl-cross.error.png"));
+  fs::remove_all(dir);
+}
+
+TEST(EndToEnd, CliExitCodes) {
+  EXPECT_EQ(shaderbed_cli("run --backend metal").first, 2);
+  EXPECT_EQ(shaderbed_cli("run --case no_such_case").first, 2);
+  EXPECT_EQ(shaderbed_cli("run --size abc").first, 2);
+  EXPECT_EQ(shaderbed_cli("frobnicate").first, 2);
+  auto [status, out] = shaderbed_cli("run --cases-dir " + (kSource / "tests" / "mutants" / "cases").string() +
+                                     " --shape sphere --size 64");
+  EXPECT_EQ(status, 1) << out;
+  EXPECT_NE(out.find("FAIL"), std::string::npos) << out;
+  auto [help_status, help] = shaderbed_cli("run --help");
+  EXPECT_EQ(help_status, 0);
+  EXPECT_NE(help.find("--backend"), std::string::npos);
+}
+
+TEST(EndToEnd, BadCaseFileIsOneLineWithFileAndLine) {
+  const fs::path dir = fs::temp_directory_path() / ("shaderbed_badcase_" + std::to_string(::getpid()));
+  fs::create_directories(dir / "cases");
+  std::ofstream(dir / "cases" / "bad.toml") << "model = \"phong\"\n[params]\npower = = 7\n";
+  auto [status, out] = shaderbed_cli("run --cases-dir " + (dir / "cases").string());
+  EXPECT_EQ(status, 2);
+  EXPECT_NE(out.find("bad.toml:3:"), std::string::npos) << out;
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace shaderbed
