@@ -80,10 +80,12 @@ Result<std::vector<uint32_t>> glslang_to_spirv(Language language, const ShaderSo
     // matched to mesh attributes by meaning, not by declaration order.
     shader.setEnvTargetHlslFunctionality1();
   }
-  // Resources without explicit bindings get distinct per-stage bindings (see header).
+  // Resources without explicit bindings get bindings; HLSL stages get distinct ones (see header).
   shader.setAutoMapBindings(true);
   shader.setAutoMapLocations(true);
-  if (source.stage == Stage::fragment) {
+  // Only HLSL/Cg: shifts apply to explicit bindings too, and a GLSL author's
+  // layout(binding = N) must reach the driver as written.
+  if (hlsl && source.stage == Stage::fragment) {
     for (auto res : {glslang::EResSampler, glslang::EResTexture, glslang::EResImage, glslang::EResUbo,
                      glslang::EResSsbo, glslang::EResUav})
       shader.setShiftBinding(res, kFragmentBindingBase);

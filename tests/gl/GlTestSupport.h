@@ -3,10 +3,16 @@
 // resolver backed by a name -> values map, NDC-space meshes, and small shader pairs
 // compiled by the real compile stage.
 #include <map>
+#include <ostream>
 #include <string>
 #include <vector>
 
 #include "backends/Backend.h"
+
+namespace shaderbed {
+// Readable parameter names in GoogleTest output ("spirv", not "4-byte object").
+inline void PrintTo(ShaderPath path, std::ostream* out) { *out << to_string(path); }
+}  // namespace shaderbed
 
 namespace shaderbed::gl_test {
 

@@ -69,7 +69,7 @@ TEST(VulkanBinding, MissingUniformIsAnErrorNamingIt) {
   const std::string text = out.error().to_string();
   EXPECT_NE(text.find("'gain'"), std::string::npos) << text;
   EXPECT_NE(text.find("'Material'"), std::string::npos) << text;
-  EXPECT_EQ(out.error().backend, "vulkan") << text;
+  EXPECT_EQ(out.error().stage, "bind") << text;  // the resolver's stage is kept
 }
 
 TEST(VulkanBinding, DifferentBlocksAtTheSameBindingAreAnError) {

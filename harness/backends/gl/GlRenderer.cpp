@@ -5,6 +5,7 @@
 #include <string>
 #include <utility>
 
+#include "backends/MesaEnvironment.h"
 #include "backends/gl/GlError.h"
 #include "backends/gl/GlMeshUpload.h"
 #include "backends/gl/GlProgramBuilder.h"
@@ -14,6 +15,7 @@
 namespace shaderbed {
 
 Result<std::unique_ptr<Backend>> make_gl_backend() {
+  isolate_mesa_shader_cache();
   auto renderer = gl::GlRenderer::create();
   if (!renderer) return std::unexpected(renderer.error());
   return std::unique_ptr<Backend>(std::move(*renderer));
@@ -109,7 +111,7 @@ Result<const GlRenderTarget*> GlRenderer::target_of_size(int width, int height) 
 void GlRenderer::set_fixed_function_state() const {
   // Projection matrices are D3D/Vulkan style (z in [0, 1]); origin stays lower-left and
   // the readback flips rows instead.
-  gl_.ClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
+  gl_.ClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   gl_.DepthRange(0.0, 1.0);
   gl_.Enable(GL_DEPTH_TEST);
   gl_.DepthFunc(GL_LESS);

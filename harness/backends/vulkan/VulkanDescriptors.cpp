@@ -38,7 +38,7 @@ class BlockContextResolver final : public UniformResolver {
     std::string context = where(block);
     if (e.message.find(member.name) == std::string::npos) context += ", member '" + member.name + "'";
     e.message = context + ": " + e.message;
-    return std::unexpected(std::move(e).in_backend("vulkan"));
+    return std::unexpected(std::move(e));
   }
 
  private:
@@ -77,7 +77,7 @@ Result<std::vector<PackedBlock>> pack_uniform_blocks(const std::vector<UniformBl
   std::vector<PackedBlock> packed;
   for (const UniformBlock& block : blocks) {
     auto bytes = pack_uniform_block(block, with_context);
-    if (!bytes) return std::unexpected(std::move(bytes.error()).in_backend("vulkan"));
+    if (!bytes) return std::unexpected(std::move(bytes.error()));
     packed.push_back({block, std::move(*bytes)});
   }
   return packed;

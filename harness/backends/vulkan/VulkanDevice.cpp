@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "backends/MesaEnvironment.h"
 #include "backends/vulkan/VulkanResult.h"
 
 namespace shaderbed::vulkan {
@@ -17,6 +18,7 @@ namespace {
 void pin_lavapipe_icd() {
   if (std::getenv("VK_ICD_FILENAMES") == nullptr && std::getenv("VK_DRIVER_FILES") == nullptr)
     ::setenv("VK_ICD_FILENAMES", lavapipe_icd_manifest, /*overwrite=*/0);
+  isolate_mesa_shader_cache();
 }
 
 const char* device_type_name(VkPhysicalDeviceType type) {
@@ -55,12 +57,19 @@ Result<std::unique_ptr<VulkanDevice>> VulkanDevice::create() {
     return std::unexpected(std::move(e));
   }
 
+  // With a driver whose hardware is absent, enumeration itself fails.
+  auto enumeration_error = [](VkResult r) {
+    Error e = vulkan_error("vkEnumeratePhysicalDevices", r);
+    e.message += " (drivers from " + driver_files_in_use() + ")";
+    return std::unexpected(std::move(e));
+  };
   uint32_t count = 0;
-  if (auto ok = check(vkEnumeratePhysicalDevices(self->instance_, &count, nullptr), "vkEnumeratePhysicalDevices"); !ok)
-    return std::unexpected(ok.error());
+  if (VkResult r = vkEnumeratePhysicalDevices(self->instance_, &count, nullptr); r != VK_SUCCESS)
+    return enumeration_error(r);
   std::vector<VkPhysicalDevice> devices(count);
-  if (auto ok = check(vkEnumeratePhysicalDevices(self->instance_, &count, devices.data()), "vkEnumeratePhysicalDevices"); !ok)
-    return std::unexpected(ok.error());
+  if (VkResult r = vkEnumeratePhysicalDevices(self->instance_, &count, devices.data()); r < 0)
+    return enumeration_error(r);
+  devices.resize(count);
 
   std::string seen;
   for (VkPhysicalDevice candidate : devices) {

@@ -90,6 +90,12 @@ void record_pass(VkCommandBuffer commands, VkRenderPass render_pass, const DrawP
   if (pass.timestamps) vkCmdWriteTimestamp(commands, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, *pass.timestamps, 1);
 }
 
+Result<HostBuffer> upload(const VulkanDevice& device, std::span<const std::byte> bytes, VkBufferUsageFlags usage) {
+  auto buffer = HostBuffer::create(device, bytes.size(), usage);
+  if (buffer) buffer->write(bytes);
+  return buffer;
+}
+
 Result<void> check_mesh(const Mesh& mesh) {
   if (mesh.indices.empty() || mesh.indices.size() % 3 != 0)
     return std::unexpected(backend_error("mesh '" + mesh.name + "' has " + std::to_string(mesh.indices.size()) +
@@ -162,14 +168,10 @@ Result<RenderOutput> VulkanRenderer::render(const DrawJob& job) {
 
   auto bindings = DescriptorBindings::create(*device_, *packed);
   if (!bindings) return std::unexpected(bindings.error());
-  const std::span<const std::byte> vertex_bytes = std::as_bytes(std::span(job.mesh.vertices));
-  const std::span<const std::byte> index_bytes = std::as_bytes(std::span(job.mesh.indices));
-  auto vertices = HostBuffer::create(*device_, vertex_bytes.size(), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+  auto vertices = upload(*device_, std::as_bytes(std::span(job.mesh.vertices)), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
   if (!vertices) return std::unexpected(vertices.error());
-  vertices->write(vertex_bytes);
-  auto indices = HostBuffer::create(*device_, index_bytes.size(), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+  auto indices = upload(*device_, std::as_bytes(std::span(job.mesh.indices)), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
   if (!indices) return std::unexpected(indices.error());
-  indices->write(index_bytes);
 
   RenderOutput output;
   RenderTarget& rt = **target;

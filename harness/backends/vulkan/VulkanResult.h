@@ -1,6 +1,7 @@
 #pragma once
 // Turns VkResult codes into shaderbed Error values ("vulkan" stage, named result code),
-// so no Vulkan failure ever aborts the process.
+// so no Vulkan failure ever aborts the process. The backend field stays empty: the stage
+// already says Vulkan, and the caller may fill it with the backend/path it ran.
 #include <string_view>
 
 #include <vulkan/vulkan.h>

@@ -13,7 +13,7 @@ Result<VertexInputLayout> vertex_input_layout(const Reflection& vertex_reflectio
   layout.binding = {.binding = 0, .stride = sizeof(Vertex), .inputRate = VK_VERTEX_INPUT_RATE_VERTEX};
   for (const StageInput& input : vertex_reflection.inputs) {
     auto stream = attribute_stream_for(input);
-    if (!stream) return std::unexpected(std::move(stream.error()).in_backend("vulkan"));
+    if (!stream) return std::unexpected(std::move(stream.error()));
     for (const auto& existing : layout.attributes)
       if (existing.location == input.location)
         return std::unexpected(backend_error("two vertex inputs at location " + std::to_string(input.location)));

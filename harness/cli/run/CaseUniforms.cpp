@@ -5,7 +5,8 @@ namespace shaderbed {
 Result<std::vector<float>> CaseUniforms::value(const UniformBlock& block, const UniformMember& member) const {
   auto it = bindings_.find(member.name);
   // The book binds by constant register: c4 is the 16-byte slot at offset 64.
-  if (it == bindings_.end() && member.offset % 16 == 0) it = bindings_.find("c" + std::to_string(member.offset / 16));
+  // Loose (default-block) GLSL uniforms come in a block with no name: no registers there.
+  if (it == bindings_.end() && !block.name.empty() && member.offset % 16 == 0) it = bindings_.find("c" + std::to_string(member.offset / 16));
   if (it == bindings_.end())
     return std::unexpected(Error{.message = "uniform '" + member.name + "' of block '" + block.name +
                                             "' has no binding in the case (add it under [bindings.<language>])",
