@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -47,6 +48,8 @@ int main(int argc, char** argv) {
   std::string json_path;
   CLI::App* run_cmd = app.add_subcommand("run", "Render the suite's cells and compare them with the reference");
   run_cmd->add_option("--case", run.cases, "Case names (shaders/cases/NAME.toml); default: all")->delimiter(',');
+  run_cmd->add_option("--variant", run.variants, "Variants: vertex (lighting per vertex), pixel (per pixel); default: all")
+      ->delimiter(',');
   run_cmd->add_option("--backend", run.backends, "Backends: vulkan, gl; default: both")->delimiter(',');
   run_cmd->add_option("--lang", run.languages, "Languages: hlsl, glsl; default: every language a case has")->delimiter(',');
   run_cmd->add_option("--shape", run.shapes, "Shapes: sphere, cube, cone, torus; default: all")->delimiter(',');
@@ -80,9 +83,10 @@ int main(int argc, char** argv) {
         fmt::print(stderr, "shaderbed: {}\n", ok.error().to_string());
         return kExitFail;
       }
-      fmt::print("results: {}\n", json_path);
+      fmt::print("results: {}\n", std::filesystem::absolute(json_path).string());
     }
-    if (!run.out_dir.empty()) fmt::print("images: {}\n", run.out_dir);
+    if (!run.out_dir.empty())
+      fmt::print("images: {}/<case>/<variant>/<shape>/\n", std::filesystem::absolute(run.out_dir).string());
     return report->count("pass") == report->results.size() && !report->results.empty() ? 0 : kExitFail;
   }
   return 0;

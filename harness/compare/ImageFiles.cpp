@@ -27,18 +27,20 @@ Result<void> write_exr(const std::string& path, int width, int height, const std
 }
 
 Result<void> write_png(const std::string& path, const Image& image, float scale) {
-  std::vector<uint8_t> bytes(size_t(image.width) * image.height * 4);
+  // Opaque, with uncovered pixels in a dark slate so white surfaces stay visible.
+  constexpr float kBackground[3] = {0.10f, 0.11f, 0.14f};
+  std::vector<uint8_t> bytes(size_t(image.width) * image.height * 3);
   for (size_t i = 0; i < size_t(image.width) * image.height; ++i) {
     const float* p = &image.rgba[i * 4];
-    uint8_t* o = &bytes[i * 4];
+    uint8_t* o = &bytes[i * 3];
+    const bool covered = image.coverage.empty() || image.coverage[i];
     const bool finite = std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
     for (int c = 0; c < 3; ++c) {
-      const float v = finite ? std::clamp(p[c] * scale, 0.0f, 1.0f) : (c == 1 ? 0.0f : 1.0f);
+      const float v = !covered ? kBackground[c] : finite ? std::clamp(p[c] * scale, 0.0f, 1.0f) : (c == 1 ? 0.0f : 1.0f);
       o[c] = static_cast<uint8_t>(std::lround(v * 255.0f));
     }
-    o[3] = image.coverage.empty() || image.coverage[i] ? 255 : 0;
   }
-  OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
+  OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
   return write_image(path, spec, bytes.data());
 }
 

@@ -11,8 +11,8 @@ namespace shaderbed {
 // RGBA float EXR of the pixels as they are.
 Result<void> write_exr(const std::string& path, int width, int height, const std::vector<float>& rgba);
 
-// 8-bit PNG: RGB multiplied by `scale`, clamped to [0, 1]; NaN/Inf shown magenta so
-// they cannot pass for black; pixels not covered are transparent.
+// 8-bit RGB PNG: colour multiplied by `scale`, clamped to [0, 1]; NaN/Inf shown magenta
+// so they cannot pass for black; uncovered pixels in a dark background colour.
 Result<void> write_png(const std::string& path, const Image& image, float scale = 1.0f);
 
 }  // namespace shaderbed

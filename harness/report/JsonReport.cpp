@@ -1,6 +1,7 @@
 #include "report/JsonReport.h"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 
 #include <nlohmann/json.hpp>
@@ -45,6 +46,9 @@ std::string to_json(const RunReport& report) {
 }
 
 Result<void> write_json(const RunReport& report, const std::string& path) {
+  std::error_code ec;
+  if (const auto parent = std::filesystem::path(path).parent_path(); !parent.empty())
+    std::filesystem::create_directories(parent, ec);
   std::ofstream out(path);
   if (!out) return std::unexpected(Error{.message = "cannot write JSON report", .file = path, .stage = "report"});
   out << to_json(report) << '\n';

@@ -69,6 +69,12 @@ Result<RunReport> run_suite(const RunOptions& o) {
   std::vector<std::string> case_names;
   for (const Case& c : *loaded) case_names.push_back(c.name);
   if (auto ok = check_names(o.cases, case_names, "case"); !ok) return std::unexpected(ok.error());
+  std::vector<std::string> variant_names;
+  for (const Case& c : *loaded)
+    for (const Variant& v : c.variants)
+      if (std::find(variant_names.begin(), variant_names.end(), v.name) == variant_names.end())
+        variant_names.push_back(v.name);
+  if (auto ok = check_names(o.variants, variant_names, "variant"); !ok) return std::unexpected(ok.error());
   if (auto ok = check_names(o.backends, {"vulkan", "gl"}, "backend"); !ok) return std::unexpected(ok.error());
   if (auto ok = check_names(o.languages, {"glsl", "hlsl", "cg"}, "language"); !ok) return std::unexpected(ok.error());
   if (auto ok = check_names(o.shapes, shape_names(), "shape"); !ok) return std::unexpected(ok.error());
@@ -103,7 +109,8 @@ Result<RunReport> run_suite(const RunOptions& o) {
   std::vector<Cell> cells;
   for (const Case& c : *loaded) {
     if (!wanted(o.cases, c.name)) continue;
-    for (const Variant& v : c.variants)
+    for (const Variant& v : c.variants) {
+      if (!wanted(o.variants, v.name)) continue;
       for (const auto& [language, files] : v.shaders) {
         if (!wanted(o.languages, to_string(language))) continue;
         for (const std::string& shape : shape_names()) {
@@ -115,7 +122,9 @@ Result<RunReport> run_suite(const RunOptions& o) {
           }
         }
       }
+    }
   }
+  if (cells.empty()) return fail("options", "the filters select no cells");
 
   std::map<std::string, Result<CompiledProgram>> programs;   // by case/variant/language
   std::map<std::string, double> compile_ms;

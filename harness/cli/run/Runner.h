@@ -15,6 +15,7 @@ namespace shaderbed {
 struct RunOptions {
   std::string cases_dir;                 // folder of *.toml case files
   std::vector<std::string> cases;        // empty = all
+  std::vector<std::string> variants;     // empty = all (vertex, pixel, ...)
   std::vector<std::string> backends;     // empty = vulkan, gl
   std::vector<std::string> languages;    // empty = every language a case has
   std::vector<std::string> shapes;       // empty = sphere, cube, cone, torus
