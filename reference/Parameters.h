@@ -19,6 +19,14 @@ class ParameterReader {
   glm::dvec3 colour(const std::string& name);
   // One value.
   double scalar(const std::string& name);
+  // Exactly two / three values (roughness_xy, attenuation): not colours, so no alpha.
+  glm::dvec2 pair(const std::string& name);
+  glm::dvec3 triple(const std::string& name);
+
+  // Records "model: parameter 'name' <condition>" unless `ok`: for values outside the
+  // domain where the model's equation is defined, e.g. a roughness of 0. Skipped when the
+  // parameter itself is missing or malformed (that problem is already recorded).
+  void require(const std::string& name, bool ok, std::string_view condition);
 
   // Every problem found so far, as "model: problem; model: problem", or nothing.
   std::optional<std::string> error() const;
@@ -30,6 +38,7 @@ class ParameterReader {
   std::string model_;
   const Params& params_;
   std::vector<std::string> problems_;
+  std::vector<std::string> unreadable_;  // names already reported missing or malformed
 };
 
 }  // namespace reference

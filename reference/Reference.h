@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <expected>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -73,6 +74,56 @@ std::vector<std::string> model_names();
 // come back as text.
 std::expected<Framebuffer, std::string> render(const Scene& scene, const std::string& model, Mode mode,
                                                const Params& params);
+
+// ---- One configuration at a time (`shaderbed eval`) -------------------------------------
+
+// docs/models.md's defaults (the book's values) for every parameter the named model
+// reads, or an error naming the known models. The LUT variants' lut_size / lut_rows are
+// not included: they are not parameters of the model, and the reference evaluates the
+// analytic model for every variant.
+std::expected<Params, std::string> default_params(const std::string& model);
+
+// The names of those parameters, sorted; empty for an unknown model.
+std::vector<std::string> model_parameters(const std::string& model);
+
+// A single shading configuration in a local frame with the surface point at the origin;
+// any frame works (the models depend on no fixed axis), the defaults put N along +Y as in
+// the case scene. Directions need not be unit length: evaluate() normalises L, V, N (and the spot axis);
+// T is used as given (ward_aniso orthogonalises it against N and normalises it).
+//
+// Where the lights go:
+//  - directional-light models (lambert ... cook_torrance): light_vector = L;
+//  - point_attenuated: the point light at distance * L, so Lp = L and d = distance;
+//  - spot, warn: the light at distance * L as for point_attenuated, shining along
+//    `spot_axis`, by default -N: straight down onto the surface, as the scene's light at
+//    (0, 50, 0) shines down onto the top of the object. Then cos(theta) = Lp·(-axis) =
+//    N·L: the point is on the axis exactly when L = N, and tilting L sweeps it through
+//    the umbra, penumbra (spot) or cos^alpha cone (warn). Pass spot_axis = -L to put
+//    the point on the axis for every L.
+//  - the eye at V (its distance does not matter: every model uses only the direction).
+struct Configuration {
+  glm::dvec3 to_light{0, 1, 0};          // L
+  glm::dvec3 to_eye{0, 1, 0};            // V
+  glm::dvec3 normal{0, 1, 0};            // N (+Y, as the scene's light from above)
+  glm::dvec3 tangent{1, 0, 0};           // T
+  double distance = 50;                  // to the point light (point_attenuated, spot, warn)
+  std::optional<glm::dvec3> spot_axis;   // direction the spot/Warn light shines; default -N
+};
+
+// The model's colour (outgoing radiance for a white light of unit intensity; unclamped)
+// at one configuration. `params` override default_params(model): pass only what
+// differs. A parameter the model does not read is an error (a typo would otherwise
+// silently evaluate the default), except lut_size and lut_rows, which case files carry
+// for their LUT variants and which are ignored. Other errors: unknown model, a
+// malformed or out-of-domain value, a zero or non-finite direction, a distance <= 0.
+std::expected<glm::dvec3, std::string> evaluate(const std::string& model, const Params& params,
+                                                const Configuration& configuration);
+
+// The same with the directions given directly.
+std::expected<glm::dvec3, std::string> evaluate(const std::string& model, const Params& params,
+                                                const glm::dvec3& L, const glm::dvec3& V,
+                                                const glm::dvec3& N = {0, 1, 0}, const glm::dvec3& T = {1, 0, 0},
+                                                double distance = 50);
 
 // Matrices the reference uses, exposed so the harness can check its own against them.
 glm::dmat4 view_matrix(const Camera&);

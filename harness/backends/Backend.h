@@ -2,6 +2,7 @@
 // The one interface every rendering engine implements (one folder per engine, as Amber
 // does). A backend draws one mesh with one compiled program into a float RGBA target and
 // reads it back; it binds only what the program's reflection asks for.
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -23,6 +24,24 @@ enum class ShaderPath {
 };
 const char* to_string(ShaderPath);
 
+// A lookup texture the harness generated on the CPU (the role of D3DXFillTextureTX):
+// single-channel 32-bit float, sampled with linear filtering (bilinear / trilinear, no
+// mipmaps) and clamp-to-edge addressing, as the book's LUT shaders assume.
+struct Texture {
+  std::string name;              // what case bindings call it, e.g. "lut"
+  uint32_t dimensions = 2;       // 1, 2 or 3
+  uint32_t width = 1, height = 1, depth = 1;
+  std::vector<float> texels;     // R32F, x fastest, then y, then z
+};
+
+// Maps a sampler the shader declares (reflection name) to one of the job's textures;
+// an error naming the sampler when the case binds nothing to it.
+class TextureResolver {
+ public:
+  virtual ~TextureResolver() = default;
+  virtual Result<const Texture*> texture(const SamplerBinding& sampler) const = 0;
+};
+
 struct DrawJob {
   const CompiledProgram& program;
   ShaderPath path;
@@ -30,6 +49,7 @@ struct DrawJob {
   const UniformResolver& uniforms;
   int width = 256;
   int height = 256;
+  const TextureResolver* textures = nullptr;   // null: the program must declare no samplers
 };
 
 struct RenderTimings {

@@ -26,8 +26,11 @@ Result<std::vector<std::byte>> pack_uniform_block(const UniformBlock& block, con
     const std::vector<float>& v = *value;
     const uint32_t elements = m.array_size ? m.array_size : 1;
     const uint32_t per_element = m.vecsize * m.columns;
-    if (v.size() < size_t(per_element) * elements && !(m.columns == 1 && m.vecsize <= 4 && v.size() >= m.vecsize)) {
-      return fail("bind", "uniform '" + m.name + "' needs " + std::to_string(per_element * elements) +
+    // A plain vector may be given more components than it has (a float3 bound to a w = 1
+    // position); arrays and matrices need every value.
+    const size_t needed = m.array_size == 0 && m.columns == 1 ? m.vecsize : size_t(per_element) * elements;
+    if (v.size() < needed) {
+      return fail("bind", "uniform '" + m.name + "' needs " + std::to_string(needed) +
                               " values, the binding supplies " + std::to_string(v.size()));
     }
     for (uint32_t e = 0; e < elements; ++e) {

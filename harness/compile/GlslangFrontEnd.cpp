@@ -1,12 +1,15 @@
 #include "compile/GlslangFrontEnd.h"
 
 #include <mutex>
+#include <optional>
 #include <regex>
 #include <sstream>
 
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
+
+#include "compile/CgFrontEnd.h"
 
 namespace shaderbed {
 namespace {
@@ -26,13 +29,16 @@ constexpr const char* kHlslPreamble =
     "#define POSITION SV_Position\n"
     "#define SHADERBED 1\n";
 
+}  // namespace
+
 // glslang's info log: "ERROR: file:LINE: message" (possibly several). Take the first
 // error and keep the rest in the message so nothing is lost.
-Error parse_info_log(const std::string& log, const std::string& path, const char* what) {
+Error glslang_log_error(const std::string& log, const std::string& path, const char* what) {
   static const std::regex first_error(R"((?:ERROR|error): ([^:\n]*):(\d+): ([^\n]*))");
   Error e{.message = std::string(what) + " failed", .file = path, .stage = "compile"};
   std::smatch m;
   if (std::regex_search(log, m, first_error)) {
+    if (!m[1].str().empty()) e.file = m[1].str();   // an included file, or a #line marker's
     e.line = std::stoi(m[2].str());
     e.message = m[3].str();
     // Count the other errors so a cascade is visible without flooding the line.
@@ -47,16 +53,23 @@ Error parse_info_log(const std::string& log, const std::string& path, const char
   return e;
 }
 
-}  // namespace
-
 Result<std::vector<uint32_t>> glslang_to_spirv(Language language, const ShaderSource& source, Target target) {
   initialise_glslang_once();
   const EShLanguage stage = to_glslang(source.stage);
   const bool hlsl = language != Language::glsl;
 
+  // Cg: the dialect layer's translation (CgDialect.h) is what glslang's HLSL front end reads.
+  std::optional<CgPrepared> cg;
+  if (language == Language::cg) {
+    auto prepared = prepare_cg(source, target);
+    if (!prepared) return std::unexpected(prepared.error());
+    cg = std::move(*prepared);
+  }
+  const std::string& source_text = cg ? cg->text : source.text;
+
   glslang::TShader shader(stage);
-  const char* text = source.text.c_str();
-  const int length = static_cast<int>(source.text.size());
+  const char* text = source_text.c_str();
+  const int length = static_cast<int>(source_text.size());
   const char* name = source.path.c_str();
   shader.setStringsWithLengthsAndNames(&text, &length, &name, 1);
   shader.setEntryPoint(source.entry_point.c_str());
@@ -74,7 +87,7 @@ Result<std::vector<uint32_t>> glslang_to_spirv(Language language, const ShaderSo
   if (target == Target::vulkan) messages |= EShMsgVulkanRules;
   if (hlsl) {
     messages |= EShMsgReadHlsl | EShMsgHlslOffsets | EShMsgHlslDX9Compatible | EShMsgHlslLegalization;
-    shader.setPreamble(kHlslPreamble);
+    shader.setPreamble(cg ? cg->preamble.c_str() : kHlslPreamble);
     shader.setHlslIoMapping(true);
     // Keep semantics (POSITION, NORMAL, TEXCOORDn) in the SPIR-V so vertex inputs can be
     // matched to mesh attributes by meaning, not by declaration order.
@@ -93,12 +106,14 @@ Result<std::vector<uint32_t>> glslang_to_spirv(Language language, const ShaderSo
 
   const auto msgs = static_cast<EShMessages>(messages);
   if (!shader.parse(GetDefaultResources(), 100, false, msgs))
-    return std::unexpected(parse_info_log(shader.getInfoLog(), source.path, "parse"));
+    return std::unexpected(glslang_log_error(shader.getInfoLog(), source.path, "parse"));
+  if (cg)
+    if (auto ok = check_cg_ast(shader, source.path); !ok) return std::unexpected(ok.error());
 
   glslang::TProgram program;
   program.addShader(&shader);
-  if (!program.link(msgs)) return std::unexpected(parse_info_log(program.getInfoLog(), source.path, "link"));
-  if (!program.mapIO()) return std::unexpected(parse_info_log(program.getInfoLog(), source.path, "I/O mapping"));
+  if (!program.link(msgs)) return std::unexpected(glslang_log_error(program.getInfoLog(), source.path, "link"));
+  if (!program.mapIO()) return std::unexpected(glslang_log_error(program.getInfoLog(), source.path, "I/O mapping"));
 
   std::vector<uint32_t> spirv;
   spv::SpvBuildLogger logger;
@@ -109,6 +124,9 @@ Result<std::vector<uint32_t>> glslang_to_spirv(Language language, const ShaderSo
   const std::string log = logger.getAllMessages();
   if (spirv.empty())
     return std::unexpected(Error{.message = "SPIR-V generation failed: " + log, .file = source.path, .stage = "compile"});
+  if (cg)
+    if (auto ok = assign_cg_varying_locations(spirv, source.stage, cg->translation, source.path); !ok)
+      return std::unexpected(ok.error());
   return spirv;
 }
 

@@ -11,6 +11,10 @@ namespace shaderbed {
 // namespace for all stages, so HLSL vertex and pixel $Global blocks must not collide.
 constexpr unsigned kFragmentBindingBase = 8;
 
+// The first error of a glslang info log ("ERROR: file:LINE: message") as an Error; the
+// file is the one the log names (an #include'd file or a #line marker's), else `path`.
+Error glslang_log_error(const std::string& log, const std::string& path, const char* what);
+
 Result<std::vector<uint32_t>> glslang_to_spirv(Language language, const ShaderSource& source, Target target);
 
 }  // namespace shaderbed

@@ -38,6 +38,7 @@ std::string to_json(const RunReport& report) {
                        {"interior_pixels", r.metrics.interior_pixels},
                        {"silhouette_pixels", r.metrics.silhouette_pixels}};
     cell["tolerance"] = {{"interior", r.interior_threshold}, {"silhouette", r.silhouette_threshold}};
+    if (!r.lut_derivation.empty()) cell["tolerance"]["lut"] = {{"bound", r.lut_bound}, {"derivation", r.lut_derivation}};
     cell["time_ms"] = r.time_ms;
     if (!r.image.empty()) cell["image"] = r.image;
     j["results"].push_back(std::move(cell));

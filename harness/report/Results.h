@@ -26,6 +26,8 @@ struct CellResult {
   CellMetrics metrics;
   double interior_threshold = 0;    // the case's tolerance
   double silhouette_threshold = 0;
+  double lut_bound = 0;             // LUT variants: the derived LUT error bound in the threshold
+  std::string lut_derivation;
   std::map<std::string, double> time_ms;   // compile, build, draw, readback, reference, compare
   std::string image;                // path of the render's EXR, if written
 };

@@ -101,8 +101,9 @@ Result<Case> load_case(const std::string& path) {
     if (mode == "per_vertex") v.mode = LightingMode::per_vertex;
     else if (mode == "per_pixel") v.mode = LightingMode::per_pixel;
     else return std::unexpected(at(path, vnode, "mode must be \"per_vertex\" or \"per_pixel\""));
+    if (auto lut = (*vt)["lut"].value<std::string>()) v.lut = *lut;
     for (const auto& [lname, lnode] : *vt) {
-      if (lname.str() == "mode") continue;
+      if (lname.str() == "mode" || lname.str() == "lut") continue;
       auto lang = parse_language(std::string(lname.str()));
       if (!lang) return std::unexpected(at(path, lnode, lang.error().message));
       const toml::table* files = lnode.as_table();
@@ -110,10 +111,8 @@ Result<Case> load_case(const std::string& path) {
       auto fsrc = files ? (*files)["fragment"].value<std::string>() : std::nullopt;
       if (!vs || !fsrc)
         return std::unexpected(at(path, lnode, "expected { vertex = \"FILE\", fragment = \"FILE\" }"));
-      ShaderFiles sf{(shader_root / *vs).lexically_normal().string(), (shader_root / *fsrc).lexically_normal().string()};
-      for (const std::string* f : {&sf.vertex, &sf.fragment})
-        if (!fs::exists(*f)) return std::unexpected(at(path, lnode, "shader file not found: " + *f));
-      v.shaders[*lang] = sf;
+      v.shaders[*lang] = ShaderFiles{(shader_root / *vs).lexically_normal().string(),
+                                     (shader_root / *fsrc).lexically_normal().string(), int(lnode.source().begin.line)};
     }
     if (v.shaders.empty()) return std::unexpected(at(path, vnode, "variant '" + v.name + "' names no shaders"));
     c.variants.push_back(std::move(v));
@@ -153,18 +152,34 @@ Result<Case> load_case(const std::string& path) {
   if (!silhouette) return std::unexpected(silhouette.error());
   c.interior = *interior;
   c.silhouette = *silhouette;
+  if (const toml::node* lut = tol->get("lut")) {
+    const toml::table* lt = lut->as_table();
+    auto reason = lt ? (*lt)["reason"].value<std::string>() : std::nullopt;
+    if (!reason || reason->empty())
+      return std::unexpected(at(path, *lut, "tolerance 'lut' needs a reason saying how the threshold follows from the LUT"));
+    c.lut = Tolerance{(*lt)["max_abs"].value_or(-1.0), *reason};
+  }
+  for (const Variant& v : c.variants)
+    if (!v.lut.empty() && !c.lut)
+      return std::unexpected(at(path, *tol, "variant '" + v.name + "' uses a LUT: [tolerance] needs 'lut' with a reason"));
   return c;
 }
 
-Result<std::vector<Case>> load_cases(const std::string& directory) {
+Result<std::vector<std::string>> list_case_files(const std::string& directory) {
   std::vector<std::string> files;
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(directory, ec))
     if (entry.path().extension() == ".toml") files.push_back(entry.path().string());
   if (ec) return std::unexpected(at(directory, "cannot list case directory: " + ec.message()));
   std::sort(files.begin(), files.end());
+  return files;
+}
+
+Result<std::vector<Case>> load_cases(const std::string& directory) {
+  auto files = list_case_files(directory);
+  if (!files) return std::unexpected(files.error());
   std::vector<Case> cases;
-  for (const std::string& f : files) {
+  for (const std::string& f : *files) {
     auto c = load_case(f);
     if (!c) return std::unexpected(c.error());
     cases.push_back(std::move(*c));

@@ -3,6 +3,7 @@
 // shader files per variant and language, how each shader's uniforms are bound, and the
 // tolerances with their reasons. A case declares only what its shaders use.
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,8 +14,9 @@
 namespace shaderbed {
 
 struct ShaderFiles {
-  std::string vertex;     // absolute paths
-  std::string fragment;
+  std::string vertex;     // absolute paths; existence is checked when a cell needs them,
+  std::string fragment;   // so a missing file of one language does not block the others
+  int line = 0;           // where the case file names them
 };
 
 enum class LightingMode { per_vertex, per_pixel };
@@ -23,6 +25,7 @@ struct Variant {
   std::string name;                         // "vertex", "pixel", ...
   LightingMode mode = LightingMode::per_pixel;
   std::map<Language, ShaderFiles> shaders;  // languages this variant is written in
+  std::string lut;                          // generated lookup texture ("" = none), bound as "lut"
 };
 
 struct Tolerance {
@@ -44,12 +47,18 @@ struct Case {
   std::map<Language, BindingTable> bindings;
   Tolerance interior;        // pixels whose 3x3 neighbourhood is covered in the reference
   Tolerance silhouette;      // the one-pixel band around the reference's silhouette
+  // LUT variants are compared with the analytic reference; max_abs < 0 means "derive
+  // it from the LUT size" (see lut/), the reason says how.
+  std::optional<Tolerance> lut;
   Tessellation tessellation = Tessellation::low;
 };
 
 Result<Case> load_case(const std::string& path);
 
-// Every *.toml in a directory, sorted by name.
+// The case files (*.toml) in a directory, sorted by name.
+Result<std::vector<std::string>> list_case_files(const std::string& directory);
+
+// Every case in a directory; the first broken file is the error.
 Result<std::vector<Case>> load_cases(const std::string& directory);
 
 Result<Language> parse_language(const std::string&);

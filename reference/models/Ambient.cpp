@@ -17,6 +17,8 @@ class Ambient final : public LightingModel {
 
 }  // namespace
 
+Params ambient_defaults() { return {{"ambient", {0.2, 0.3, 0.4}}}; }
+
 ModelOrError make_ambient(const Params& params) {
   ParameterReader reader("ambient", params);
   const glm::dvec3 ambient = reader.colour("ambient");

@@ -22,6 +22,8 @@ class Lambert final : public LightingModel {
 
 }  // namespace
 
+Params lambert_defaults() { return {{"diffuse", {1, 1, 1}}}; }
+
 ModelOrError make_lambert(const Params& params) {
   ParameterReader reader("lambert", params);
   const glm::dvec3 diffuse = reader.colour("diffuse");

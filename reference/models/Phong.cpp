@@ -34,6 +34,8 @@ class Phong final : public LightingModel {
 
 }  // namespace
 
+Params phong_defaults() { return {{"diffuse", {1, 1, 1}}, {"specular", {1, 1, 1}}, {"power", {7}}}; }
+
 ModelOrError make_phong(const Params& params) {
   ParameterReader reader("phong", params);
   const glm::dvec3 diffuse = reader.colour("diffuse");

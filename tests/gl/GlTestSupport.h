@@ -31,6 +31,18 @@ class MapResolver final : public UniformResolver {
   std::map<std::string, std::vector<float>> values_;
 };
 
+// Textures by sampler name; anything else is a "no texture bound" error that
+// deliberately does not name the sampler, so the tests can see the backend add it.
+class MapTextureResolver final : public TextureResolver {
+ public:
+  MapTextureResolver() = default;
+  explicit MapTextureResolver(std::map<std::string, Texture> textures) : textures_(std::move(textures)) {}
+  Result<const Texture*> texture(const SamplerBinding& sampler) const override;
+
+ private:
+  std::map<std::string, Texture> textures_;
+};
+
 // Two triangles covering x0..x1, y0..y1 in NDC at depth z, with normals (0,0,1) and uv.
 Mesh ndc_rectangle(float x0, float y0, float x1, float y1, float z = 0.5f);
 

@@ -78,13 +78,26 @@ TEST(Models, PhongUsesTheEyePositionRelativeToThePoint) {
   expect_colour((*model)->shade(point, {up, {0, 50, 0}, {5, 10, 0}}), {0.7, 0.9, 1.1});
 }
 
-TEST(Models, NamesAreRegisteredAndBuildable) {
+TEST(Models, NamesAreRegisteredAndBuildableFromTheirDefaults) {
   const std::vector<std::string> names = model_names();
-  for (const char* name : {"ambient", "lambert", "phong"}) {
+  for (const char* name : {"ambient", "lambert", "phong", "blinn_phong", "schlick", "minnaert", "oren_nayar",
+                           "ward_iso", "ward_aniso", "cook_torrance", "point_attenuated", "spot", "warn"}) {
     EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name;
   }
-  const Params everything{{"ambient", {0, 0, 0}}, {"diffuse", {1, 1, 1}}, {"specular", {1, 1, 1}}, {"power", {7}}};
-  for (const std::string& name : names) EXPECT_TRUE(make_model(name, everything)) << name;
+  EXPECT_EQ(names.size(), 13u);
+  for (const std::string& name : names) {
+    const auto defaults = default_params(name);
+    ASSERT_TRUE(defaults) << name;
+    EXPECT_TRUE(make_model(name, *defaults)) << name;
+    // Every default is needed: dropping any one is a "missing parameter" error.
+    for (const auto& [parameter, values] : *defaults) {
+      Params without = *defaults;
+      without.erase(parameter);
+      const auto model = make_model(name, without);
+      ASSERT_FALSE(model) << name << " without " << parameter;
+      EXPECT_EQ(model.error(), name + ": missing parameter '" + parameter + "'");
+    }
+  }
 }
 
 TEST(Models, MissingParameterNamesTheModelAndTheParameter) {

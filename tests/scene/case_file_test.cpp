@@ -69,13 +69,16 @@ TEST_F(TempCase, ToleranceWithoutReasonIsRefused) {
   EXPECT_NE(c.error().message.find("reason"), std::string::npos);
 }
 
-TEST_F(TempCase, MissingShaderFileIsNamed) {
+TEST_F(TempCase, ShaderFilesRememberWhereTheCaseNamesThem) {
   auto c = load_case(write("model = \"lambert\"\n"
                            "[variants.pixel]\n"
-                           "glsl = { vertex = \"glsl/nope.vert\", fragment = \"glsl/lambert.frag\" }\n"));
-  ASSERT_FALSE(c);
-  EXPECT_EQ(c.error().line, 3);
-  EXPECT_NE(c.error().message.find("nope.vert"), std::string::npos);
+                           "glsl = { vertex = \"glsl/nope.vert\", fragment = \"glsl/lambert.frag\" }\n"
+                           "[tolerance]\n"
+                           "interior = { max_abs = 1e-4, reason = \"fp32\" }\n"
+                           "silhouette = { max_abs = 1e-2, reason = \"edges\" }\n"));
+  ASSERT_TRUE(c) << c.error().to_string();
+  EXPECT_EQ(c->variants[0].shaders.at(Language::glsl).line, 3) << "a missing file is reported at this line";
+  EXPECT_NE(c->variants[0].shaders.at(Language::glsl).vertex.find("nope.vert"), std::string::npos);
 }
 
 TEST_F(TempCase, MinimalCaseLoads) {

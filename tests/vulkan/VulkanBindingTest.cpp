@@ -97,19 +97,6 @@ void main() { gl_Position = vec4(position, 1.0) + offset; }
   EXPECT_EQ(out.error().stage, "vulkan") << text;
 }
 
-TEST(VulkanBinding, SamplersAreRejectedForNow) {
-  auto program = compile_glsl(passthrough_vertex_shader, R"(#version 450
-layout(set = 0, binding = 1) uniform sampler2D albedo;
-layout(location = 0) out vec4 colour;
-void main() { colour = texture(albedo, vec2(0.5)); }
-)");
-  ASSERT_TRUE(program) << program.error().to_string();
-  const MapResolver no_uniforms;
-  auto out = draw(*program, full_screen_quad(), no_uniforms);
-  ASSERT_FALSE(out);
-  EXPECT_NE(out.error().message.find("samplers not supported yet"), std::string::npos) << out.error().to_string();
-}
-
 TEST(VulkanBinding, VertexInputThatIsNoMeshStreamIsAnError) {
   auto program = compile_glsl(R"(#version 450
 layout(location = 0) in vec3 position;

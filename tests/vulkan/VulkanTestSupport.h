@@ -93,6 +93,22 @@ class MapResolver final : public UniformResolver {
   std::map<std::string, std::vector<float>> values_;
 };
 
+// Textures by sampler name. A missing name is an error that deliberately does not repeat
+// the name, so the tests see whether the backend's error says which sampler it was.
+class MapTextureResolver final : public TextureResolver {
+ public:
+  MapTextureResolver() = default;
+  MapTextureResolver(std::map<std::string, Texture> textures) : textures_(std::move(textures)) {}
+  Result<const Texture*> texture(const SamplerBinding& sampler) const override {
+    auto it = textures_.find(sampler.name);
+    if (it == textures_.end()) return fail("bind", "no texture bound");
+    return &it->second;
+  }
+
+ private:
+  std::map<std::string, Texture> textures_;
+};
+
 inline size_t covered_pixel_count(const Image& image) {
   size_t n = 0;
   for (uint8_t c : image.coverage) n += c;
@@ -109,6 +125,15 @@ inline Result<RenderOutput> draw(const CompiledProgram& program, const Mesh& mes
   if (backend == nullptr) return fail("test", "no Vulkan backend");
   return backend->render(DrawJob{.program = program, .path = path, .mesh = mesh, .uniforms = uniforms,
                                  .width = width, .height = height});
+}
+
+inline Result<RenderOutput> draw_textured(const CompiledProgram& program, const Mesh& mesh,
+                                          const UniformResolver& uniforms, const TextureResolver* textures,
+                                          int width, int height) {
+  Backend* backend = shared_backend();
+  if (backend == nullptr) return fail("test", "no Vulkan backend");
+  return backend->render(DrawJob{.program = program, .path = ShaderPath::spirv, .mesh = mesh, .uniforms = uniforms,
+                                 .width = width, .height = height, .textures = textures});
 }
 
 }  // namespace shaderbed::vulkan_test

@@ -40,6 +40,18 @@ namespace shaderbed::gl {
   X(PFNGLFRAMEBUFFERTEXTURE2DPROC, FramebufferTexture2D, "glFramebufferTexture2D")       \
   X(PFNGLDRAWBUFFERSPROC, DrawBuffers, "glDrawBuffers")                                  \
   X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, CheckFramebufferStatus, "glCheckFramebufferStatus") \
+  /* lookup textures (GL 4.5 direct state access) */                                     \
+  X(PFNGLCREATETEXTURESPROC, CreateTextures, "glCreateTextures")                         \
+  X(PFNGLTEXTURESTORAGE1DPROC, TextureStorage1D, "glTextureStorage1D")                   \
+  X(PFNGLTEXTURESTORAGE2DPROC, TextureStorage2D, "glTextureStorage2D")                   \
+  X(PFNGLTEXTURESTORAGE3DPROC, TextureStorage3D, "glTextureStorage3D")                   \
+  X(PFNGLTEXTURESUBIMAGE1DPROC, TextureSubImage1D, "glTextureSubImage1D")                \
+  X(PFNGLTEXTURESUBIMAGE2DPROC, TextureSubImage2D, "glTextureSubImage2D")                \
+  X(PFNGLTEXTURESUBIMAGE3DPROC, TextureSubImage3D, "glTextureSubImage3D")                \
+  X(PFNGLTEXTUREPARAMETERIPROC, TextureParameteri, "glTextureParameteri")                \
+  X(PFNGLBINDTEXTUREUNITPROC, BindTextureUnit, "glBindTextureUnit")                      \
+  X(PFNGLBINDSAMPLERPROC, BindSampler, "glBindSampler")                                  \
+  X(PFNGLGETINTERNALFORMATIVPROC, GetInternalformativ, "glGetInternalformativ")          \
   /* shaders and programs */                                                             \
   X(PFNGLCREATESHADERPROC, CreateShader, "glCreateShader")                               \
   X(PFNGLDELETESHADERPROC, DeleteShader, "glDeleteShader")                               \
@@ -61,7 +73,9 @@ namespace shaderbed::gl {
   X(PFNGLGETPROGRAMRESOURCEIVPROC, GetProgramResourceiv, "glGetProgramResourceiv")       \
   X(PFNGLGETPROGRAMRESOURCENAMEPROC, GetProgramResourceName, "glGetProgramResourceName") \
   X(PFNGLUNIFORMBLOCKBINDINGPROC, UniformBlockBinding, "glUniformBlockBinding")          \
+  X(PFNGLGETUNIFORMIVPROC, GetUniformiv, "glGetUniformiv")                               \
   /* uniforms */                                                                         \
+  X(PFNGLPROGRAMUNIFORM1IPROC, ProgramUniform1i, "glProgramUniform1i")                   \
   X(PFNGLPROGRAMUNIFORM1FVPROC, ProgramUniform1fv, "glProgramUniform1fv")                \
   X(PFNGLPROGRAMUNIFORM2FVPROC, ProgramUniform2fv, "glProgramUniform2fv")                \
   X(PFNGLPROGRAMUNIFORM3FVPROC, ProgramUniform3fv, "glProgramUniform3fv")                \

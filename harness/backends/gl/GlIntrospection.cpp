@@ -44,6 +44,12 @@ GLint resource_count(const GlFunctions& gl, GLuint program, GLenum interface) {
 
 bool is_builtin(const std::string& name) { return name.starts_with("gl_"); }
 
+// What a single-channel float LUT can be read through: float samplers, no shadow,
+// array, cube, rectangle or multisample variants.
+bool lookup_sampler_type(GLenum type) {
+  return type == GL_SAMPLER_1D || type == GL_SAMPLER_2D || type == GL_SAMPLER_3D;
+}
+
 // GL names arrays "x[0]"; the compile stage's reflection (and the resolver) say "x".
 bool strip_array_suffix(std::string& name) {
   if (!name.ends_with("[0]")) return false;
@@ -161,6 +167,49 @@ Result<void> give_blocks_distinct_bindings(const GlFunctions& gl, GLuint program
   return check_gl(gl, "assigning uniform block bindings");
 }
 
+// A default-block sampler: its name, its dimensions from the GL type, and as binding the
+// texture unit the program reads it from (layout(binding) or 0 by default).
+Result<SamplerBinding> sampler_uniform(const GlFunctions& gl, GLuint program, const UniformResource& u) {
+  const GlTypeShape shape = gl_type_shape(u.type);
+  std::string name = u.name;
+  if (strip_array_suffix(name) && u.array_size > 1)
+    return std::unexpected(gl_error("sampler '" + name + "' is an array of " + std::to_string(u.array_size) +
+                                    "; lookup textures bind one texture per sampler"));
+  if (!lookup_sampler_type(u.type))
+    return std::unexpected(gl_error("sampler '" + name + "' has GL type " + hex(u.type) +
+                                    "; lookup textures are float sampler1D, sampler2D or sampler3D"));
+  GLint unit = 0;
+  gl.GetUniformiv(program, u.location, &unit);
+  return SamplerBinding{.name = std::move(name), .set = 0, .binding = uint32_t(unit),
+                        .dimensions = shape.sampler_dimensions};
+}
+
+// Every sampler the program does not place with layout(binding) reads unit 0, so two
+// of them would read one texture. Each keeps its unit unless an earlier sampler has it;
+// the others move to units nobody uses (glProgramUniform1i).
+Result<void> give_samplers_distinct_units(const GlFunctions& gl, GLuint program, std::vector<SamplerBinding>& samplers,
+                                          const std::vector<GLint>& locations) {
+  GLint max_units = 0;
+  gl.GetIntegerv(GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS, &max_units);
+  std::set<uint32_t> declared;
+  for (const SamplerBinding& s : samplers) declared.insert(s.binding);
+  std::set<uint32_t> given;
+  uint32_t next_free = 0;
+  for (size_t i = 0; i < samplers.size(); ++i) {
+    SamplerBinding& sampler = samplers[i];
+    if (given.contains(sampler.binding)) {
+      while (declared.contains(next_free) || given.contains(next_free)) ++next_free;
+      if (next_free >= uint32_t(max_units))
+        return std::unexpected(gl_error("more samplers than the " + std::to_string(max_units) +
+                                        " texture units GL offers"));
+      sampler.binding = next_free;
+      gl.ProgramUniform1i(program, locations[i], GLint(sampler.binding));
+    }
+    given.insert(sampler.binding);
+  }
+  return check_gl(gl, "assigning texture units to samplers");
+}
+
 }  // namespace
 
 Result<GlProgramInterface> introspect_gl_program(const GlFunctions& gl, GLuint program, BlockBindings bindings) {
@@ -177,6 +226,7 @@ Result<GlProgramInterface> introspect_gl_program(const GlFunctions& gl, GLuint p
                                                  .members = {}});
   }
 
+  std::vector<GLint> sampler_locations;  // parallel to result.samplers
   const GLint uniform_count = resource_count(gl, program, GL_UNIFORM);
   for (GLint i = 0; i < uniform_count; ++i) {
     const UniformResource u = read_uniform(gl, program, GLuint(i));
@@ -192,10 +242,10 @@ Result<GlProgramInterface> introspect_gl_program(const GlFunctions& gl, GLuint p
     }
     if (is_builtin(u.name) || u.location < 0) continue;
     if (gl_type_shape(u.type).kind == GlScalarKind::sampler) {
-      std::string name = u.name;
-      strip_array_suffix(name);
-      result.samplers.push_back(SamplerBinding{.name = name, .set = 0, .binding = 0,
-                                               .dimensions = gl_type_shape(u.type).sampler_dimensions});
+      auto sampler = sampler_uniform(gl, program, u);
+      if (!sampler) return std::unexpected(sampler.error());
+      result.samplers.push_back(std::move(*sampler));
+      sampler_locations.push_back(u.location);
       continue;
     }
     auto loose = loose_uniform(u);
@@ -207,6 +257,8 @@ Result<GlProgramInterface> introspect_gl_program(const GlFunctions& gl, GLuint p
 
   if (bindings == BlockBindings::assign_distinct) {
     if (auto ok = give_blocks_distinct_bindings(gl, program, result.uniform_blocks); !ok)
+      return std::unexpected(ok.error());
+    if (auto ok = give_samplers_distinct_units(gl, program, result.samplers, sampler_locations); !ok)
       return std::unexpected(ok.error());
   }
 

@@ -28,23 +28,28 @@ struct GlProgramInterface {
   std::vector<UniformBlock> uniform_blocks;   // binding = the GL uniform buffer binding point
   std::vector<LooseUniform> loose_uniforms;
   std::vector<StageInput> inputs;             // vertex attributes, by location
-  std::vector<SamplerBinding> samplers;
+  std::vector<SamplerBinding> samplers;       // binding = the texture unit; set is always 0
 };
 
 enum class BlockBindings {
   keep,             // report what the program has
-  assign_distinct,  // GLSL without layout(binding) leaves every block at 0: give each its own
+  // GLSL without layout(binding) leaves every block at binding 0 and every sampler at
+  // texture unit 0: give each block its own binding and each sampler its own unit.
+  assign_distinct,
 };
 
 Result<GlProgramInterface> introspect_gl_program(const GlFunctions& gl, GLuint program, BlockBindings bindings);
 
 // The union of the vertex_gl and fragment_gl reflections; a binding used by two
-// different blocks is an error (GL has one binding namespace for all stages).
+// different blocks, or a texture unit by two different samplers, is an error (GL has
+// one namespace of each for all stages). A sampler both stages declare is one sampler.
 Result<GlProgramInterface> interface_from_reflection(const CompiledProgram& program);
 
 // SPIRV-Cross GLSL must reproduce the SPIR-V's offsets or the reflection-packed bytes land
 // in the wrong members. Compares GL's view of the linked cross GLSL with the reflection,
-// member by member (by binding and name), and names the first disagreement.
+// member by member (by binding and name), and names the first disagreement. Samplers
+// are compared by texture unit and dimensions only: SPIRV-Cross may rename them, and
+// the units (its layout(binding)) are what the textures are bound to.
 Result<void> check_cross_glsl_layout(const GlProgramInterface& from_gl, const GlProgramInterface& reflected);
 
 }  // namespace shaderbed::gl

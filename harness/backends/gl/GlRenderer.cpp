@@ -10,7 +10,9 @@
 #include "backends/gl/GlMeshUpload.h"
 #include "backends/gl/GlProgramBuilder.h"
 #include "backends/gl/GlProgramInterface.h"
+#include "backends/gl/GlTextures.h"
 #include "backends/gl/GlUniformUpload.h"
+#include "backends/gl/SpirvUniformLocations.h"
 
 namespace shaderbed {
 
@@ -137,6 +139,9 @@ Result<RenderOutput> GlRenderer::render_on_path(const DrawJob& job) {
   auto target = target_of_size(job.width, job.height);
   if (!target) return std::unexpected(target.error());
 
+  if (job.path != ShaderPath::native_glsl)
+    if (auto ok = check_uniform_locations_across_stages(job.program); !ok) return std::unexpected(ok.error());
+
   RenderOutput output;
   Stopwatch stopwatch;
   auto program = build_gl_program(gl_, job.program, job.path);
@@ -155,14 +160,13 @@ Result<RenderOutput> GlRenderer::render_on_path(const DrawJob& job) {
     }
   }
   if (!interface) return std::unexpected(interface.error());
-  if (!interface->samplers.empty())
-    return std::unexpected(gl_error("samplers are not supported yet (the program declares '" +
-                                    interface->samplers.front().name + "', and a DrawJob carries no textures)"));
 
   auto uniform_buffers = upload_uniform_blocks(gl_, interface->uniform_blocks, job.uniforms);
   if (!uniform_buffers) return std::unexpected(uniform_buffers.error());
   if (auto ok = set_loose_uniforms(gl_, program->get(), interface->loose_uniforms, job.uniforms); !ok)
     return std::unexpected(ok.error());
+  auto textures = bind_textures(gl_, interface->samplers, job.textures);
+  if (!textures) return std::unexpected(textures.error());
   auto mesh = upload_mesh(gl_, job.mesh, interface->inputs);
   if (!mesh) return std::unexpected(mesh.error());
 

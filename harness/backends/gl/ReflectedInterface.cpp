@@ -48,13 +48,46 @@ Result<GlProgramInterface> interface_from_reflection(const CompiledProgram& prog
                                       std::to_string(block.binding) + ", and GL has one binding namespace for all stages")
                                  .in_file(module->source_file));
     }
-    result.samplers.insert(result.samplers.end(), module->reflection.samplers.begin(), module->reflection.samplers.end());
+    for (const SamplerBinding& sampler : module->reflection.samplers) {
+      const auto same_unit = std::ranges::find(result.samplers, sampler.binding, &SamplerBinding::binding);
+      if (same_unit == result.samplers.end()) {
+        result.samplers.push_back(sampler);
+        continue;
+      }
+      if (same_unit->name == sampler.name && same_unit->dimensions == sampler.dimensions) continue;
+      return std::unexpected(gl_error("samplers '" + same_unit->name + "' (" + std::to_string(same_unit->dimensions) +
+                                      "D) and '" + sampler.name + "' (" + std::to_string(sampler.dimensions) +
+                                      "D) both use texture unit " + std::to_string(sampler.binding) +
+                                      ", and GL has one unit namespace for all stages")
+                                 .in_file(module->source_file));
+    }
   }
   result.inputs = program.vertex_gl.reflection.inputs;
   return result;
 }
 
+namespace {
+
+Result<void> check_cross_glsl_samplers(const GlProgramInterface& from_gl, const GlProgramInterface& reflected) {
+  for (const SamplerBinding& gl_sampler : from_gl.samplers) {
+    const auto match = std::ranges::find(reflected.samplers, gl_sampler.binding, &SamplerBinding::binding);
+    if (match == reflected.samplers.end())
+      return std::unexpected(gl_error("SPIRV-Cross GLSL reads sampler '" + gl_sampler.name + "' from texture unit " +
+                                      std::to_string(gl_sampler.binding) +
+                                      ", where the SPIR-V reflection has no sampler (layout(binding) lost?)"));
+    if (match->dimensions != gl_sampler.dimensions)
+      return std::unexpected(gl_error("SPIRV-Cross GLSL declares sampler '" + gl_sampler.name + "' at unit " +
+                                      std::to_string(gl_sampler.binding) + " as " +
+                                      std::to_string(gl_sampler.dimensions) + "D, the SPIR-V reflection says '" +
+                                      match->name + "' " + std::to_string(match->dimensions) + "D"));
+  }
+  return {};
+}
+
+}  // namespace
+
 Result<void> check_cross_glsl_layout(const GlProgramInterface& from_gl, const GlProgramInterface& reflected) {
+  if (auto ok = check_cross_glsl_samplers(from_gl, reflected); !ok) return ok;
   for (const UniformBlock& gl_block : from_gl.uniform_blocks) {
     const auto match = std::ranges::find(reflected.uniform_blocks, gl_block.binding, &UniformBlock::binding);
     if (match == reflected.uniform_blocks.end())

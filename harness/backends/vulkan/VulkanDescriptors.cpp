@@ -48,14 +48,6 @@ class BlockContextResolver final : public UniformResolver {
 }  // namespace
 
 Result<std::vector<UniformBlock>> program_uniform_blocks(const CompiledProgram& program) {
-  for (const ShaderModule* module : {&program.vertex, &program.fragment}) {
-    if (!module->reflection.samplers.empty()) {
-      const std::string stage = module->stage == Stage::vertex ? "vertex" : "fragment";
-      Error e = backend_error("samplers not supported yet (the " + stage + " shader declares '" +
-                              module->reflection.samplers.front().name + "')");
-      return std::unexpected(std::move(e).in_file(module->source_file));
-    }
-  }
   std::map<std::pair<uint32_t, uint32_t>, UniformBlock> by_binding;
   for (const ShaderModule* module : {&program.vertex, &program.fragment}) {
     for (const UniformBlock& block : module->reflection.uniform_blocks) {
@@ -83,11 +75,12 @@ Result<std::vector<PackedBlock>> pack_uniform_blocks(const std::vector<UniformBl
   return packed;
 }
 
-Result<DescriptorBindings> DescriptorBindings::create(const VulkanDevice& device, const std::vector<PackedBlock>& blocks) {
+Result<DescriptorBindings> DescriptorBindings::create(const VulkanDevice& device, const std::vector<PackedBlock>& blocks,
+                                                     std::span<const TextureDescriptor> textures) {
   VkDevice dev = device.device();
   const VkPhysicalDeviceLimits& limits = device.properties().limits;
   DescriptorBindings out;
-  if (blocks.empty()) return out;
+  if (blocks.empty() && textures.empty()) return out;
 
   // Stage flags vertex|fragment for every block: each counts against both stages' limits.
   if (blocks.size() > limits.maxPerStageDescriptorUniformBuffers || blocks.size() > limits.maxDescriptorSetUniformBuffers)
@@ -105,6 +98,13 @@ Result<DescriptorBindings> DescriptorBindings::create(const VulkanDevice& device
       return std::unexpected(backend_error(where(p.block) + " is " + std::to_string(p.bytes.size()) +
                                            " bytes; the device allows " + std::to_string(limits.maxUniformBufferRange)));
   }
+  for (const TextureDescriptor& t : textures) {
+    set_count = std::max(set_count, t.set + 1);
+    if (t.set >= limits.maxBoundDescriptorSets)
+      return std::unexpected(backend_error("a sampler at binding " + std::to_string(t.binding) + " uses set " +
+                                           std::to_string(t.set) + "; the device binds sets 0.." +
+                                           std::to_string(limits.maxBoundDescriptorSets - 1)));
+  }
 
   for (const PackedBlock& p : blocks) {
     auto buffer = HostBuffer::create(device, p.bytes.size(), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
@@ -113,7 +113,8 @@ Result<DescriptorBindings> DescriptorBindings::create(const VulkanDevice& device
     out.buffers_.push_back(std::move(*buffer));
   }
 
-  uint32_t used_sets = 0;
+  constexpr VkShaderStageFlags both_stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+  std::vector<bool> used(set_count, false);
   for (uint32_t set = 0; set < set_count; ++set) {
     std::vector<VkDescriptorSetLayoutBinding> bindings;
     for (const PackedBlock& p : blocks)
@@ -121,8 +122,14 @@ Result<DescriptorBindings> DescriptorBindings::create(const VulkanDevice& device
         bindings.push_back({.binding = p.block.binding,
                             .descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
                             .descriptorCount = 1,
-                            .stageFlags = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT});
-    if (!bindings.empty()) ++used_sets;
+                            .stageFlags = both_stages});
+    for (const TextureDescriptor& t : textures)
+      if (t.set == set)
+        bindings.push_back({.binding = t.binding,
+                            .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                            .descriptorCount = 1,
+                            .stageFlags = both_stages});
+    used[set] = !bindings.empty();
     const VkDescriptorSetLayoutCreateInfo info{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO,
                                                .bindingCount = uint32_t(bindings.size()),
                                                .pBindings = bindings.data()};
@@ -132,22 +139,21 @@ Result<DescriptorBindings> DescriptorBindings::create(const VulkanDevice& device
     out.layouts_.emplace_back(dev, layout);
   }
 
-  const VkDescriptorPoolSize pool_size{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, uint32_t(blocks.size())};
+  std::vector<VkDescriptorPoolSize> pool_sizes;
+  if (!blocks.empty()) pool_sizes.push_back({VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, uint32_t(blocks.size())});
+  if (!textures.empty()) pool_sizes.push_back({VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, uint32_t(textures.size())});
   const VkDescriptorPoolCreateInfo pool_info{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO,
-                                             .maxSets = used_sets,
-                                             .poolSizeCount = 1,
-                                             .pPoolSizes = &pool_size};
+                                             .maxSets = uint32_t(std::ranges::count(used, true)),
+                                             .poolSizeCount = uint32_t(pool_sizes.size()),
+                                             .pPoolSizes = pool_sizes.data()};
   VkDescriptorPool pool;
   if (auto ok = check(vkCreateDescriptorPool(dev, &pool_info, nullptr, &pool), "vkCreateDescriptorPool"); !ok)
     return std::unexpected(ok.error());
   out.pool_ = OwnedDescriptorPool(dev, pool);
 
   out.sets_.assign(set_count, VK_NULL_HANDLE);
-  std::vector<VkDescriptorBufferInfo> buffer_infos(blocks.size());
-  std::vector<VkWriteDescriptorSet> writes;
   for (uint32_t set = 0; set < set_count; ++set) {
-    const bool used = std::ranges::any_of(blocks, [&](const PackedBlock& p) { return p.block.set == set; });
-    if (!used) continue;
+    if (!used[set]) continue;
     const VkDescriptorSetLayout layout = out.layouts_[set].get();
     const VkDescriptorSetAllocateInfo alloc{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO,
                                             .descriptorPool = pool,
@@ -156,6 +162,9 @@ Result<DescriptorBindings> DescriptorBindings::create(const VulkanDevice& device
     if (auto ok = check(vkAllocateDescriptorSets(dev, &alloc, &out.sets_[set]), "vkAllocateDescriptorSets"); !ok)
       return std::unexpected(ok.error());
   }
+  std::vector<VkDescriptorBufferInfo> buffer_infos(blocks.size());
+  std::vector<VkDescriptorImageInfo> image_infos(textures.size());
+  std::vector<VkWriteDescriptorSet> writes;
   for (size_t i = 0; i < blocks.size(); ++i) {
     buffer_infos[i] = {out.buffers_[i].buffer(), 0, VK_WHOLE_SIZE};
     writes.push_back({.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
@@ -164,6 +173,15 @@ Result<DescriptorBindings> DescriptorBindings::create(const VulkanDevice& device
                       .descriptorCount = 1,
                       .descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
                       .pBufferInfo = &buffer_infos[i]});
+  }
+  for (size_t i = 0; i < textures.size(); ++i) {
+    image_infos[i] = {textures[i].sampler, textures[i].view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    writes.push_back({.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+                      .dstSet = out.sets_[textures[i].set],
+                      .dstBinding = textures[i].binding,
+                      .descriptorCount = 1,
+                      .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                      .pImageInfo = &image_infos[i]});
   }
   vkUpdateDescriptorSets(dev, uint32_t(writes.size()), writes.data(), 0, nullptr);
   return out;

@@ -1,8 +1,10 @@
 #pragma once
-// Uniform blocks -> descriptor sets: the blocks of both stages are merged by
-// (set, binding), each is packed from the UniformResolver into its own host-visible
-// uniform buffer, and every used set gets a layout, a descriptor set and its writes.
+// Uniform blocks and lookup textures -> descriptor sets: the blocks of both stages are
+// merged by (set, binding), each is packed from the UniformResolver into its own
+// host-visible uniform buffer, textures (VulkanTextures) become combined image-samplers
+// in the same sets, and every used set gets a layout, a descriptor set and its writes.
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include <vulkan/vulkan.h>
@@ -11,14 +13,15 @@
 #include "backends/vulkan/VulkanDevice.h"
 #include "backends/vulkan/VulkanHandles.h"
 #include "backends/vulkan/VulkanMemory.h"
+#include "backends/vulkan/VulkanTextures.h"
 #include "compile/ShaderModule.h"
 #include "core/Error.h"
 
 namespace shaderbed::vulkan {
 
 // The union of both stages' uniform blocks, sorted by (set, binding). A block declared
-// at the same set/binding by both stages must be identical there. Samplers are an
-// error until the backend binds textures.
+// at the same set/binding by both stages must be identical there. Samplers are left to
+// program_samplers (VulkanTextures).
 Result<std::vector<UniformBlock>> program_uniform_blocks(const CompiledProgram& program);
 
 struct PackedBlock {
@@ -33,7 +36,9 @@ Result<std::vector<PackedBlock>> pack_uniform_blocks(const std::vector<UniformBl
 
 class DescriptorBindings {
  public:
-  static Result<DescriptorBindings> create(const VulkanDevice& device, const std::vector<PackedBlock>& blocks);
+  // `textures` must not share a set/binding with a block (program_samplers checks).
+  static Result<DescriptorBindings> create(const VulkanDevice& device, const std::vector<PackedBlock>& blocks,
+                                           std::span<const TextureDescriptor> textures = {});
 
   // One layout per set number 0..highest used (unused numbers get an empty layout, as
   // a pipeline layout's sets are numbered by position).

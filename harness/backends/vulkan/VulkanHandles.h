@@ -43,6 +43,7 @@ class DeviceObject {
 using OwnedBuffer = DeviceObject<VkBuffer, vkDestroyBuffer>;
 using OwnedImage = DeviceObject<VkImage, vkDestroyImage>;
 using OwnedImageView = DeviceObject<VkImageView, vkDestroyImageView>;
+using OwnedSampler = DeviceObject<VkSampler, vkDestroySampler>;
 using OwnedMemory = DeviceObject<VkDeviceMemory, vkFreeMemory>;
 using OwnedRenderPass = DeviceObject<VkRenderPass, vkDestroyRenderPass>;
 using OwnedFramebuffer = DeviceObject<VkFramebuffer, vkDestroyFramebuffer>;

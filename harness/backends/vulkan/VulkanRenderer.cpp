@@ -10,6 +10,7 @@
 #include "backends/vulkan/VulkanMemory.h"
 #include "backends/vulkan/VulkanPipeline.h"
 #include "backends/vulkan/VulkanResult.h"
+#include "backends/vulkan/VulkanTextures.h"
 #include "backends/vulkan/VulkanVertexInput.h"
 
 namespace shaderbed {
@@ -32,6 +33,7 @@ double ms_since(Clock::time_point start) {
 // Everything one draw creates. Kept together so that, should the device be lost with
 // the draw still running, it can be abandoned as a whole instead of destroyed in use.
 struct DrawResources {
+  DrawTextures textures;  // first: destroyed after the descriptor sets that refer to it
   DescriptorBindings bindings;
   GraphicsPipeline pipeline;
   HostBuffer vertices;
@@ -157,8 +159,12 @@ Result<RenderOutput> VulkanRenderer::render(const DrawJob& job) {
   if (auto ok = check_mesh(job.mesh); !ok) return std::unexpected(ok.error());
   auto blocks = program_uniform_blocks(job.program);
   if (!blocks) return std::unexpected(blocks.error());
+  auto samplers = program_samplers(job.program, *blocks);
+  if (!samplers) return std::unexpected(samplers.error());
   auto packed = pack_uniform_blocks(*blocks, job.uniforms);
   if (!packed) return std::unexpected(packed.error());
+  auto resolved_textures = resolve_textures(*device_, *samplers, job.textures);
+  if (!resolved_textures) return std::unexpected(resolved_textures.error());
   auto vertex_input = vertex_input_layout(job.program.vertex.reflection);
   if (!vertex_input) return std::unexpected(vertex_input.error());
 
@@ -166,7 +172,18 @@ Result<RenderOutput> VulkanRenderer::render(const DrawJob& job) {
   auto target = target_for(extent);
   if (!target) return std::unexpected(target.error());
 
-  auto bindings = DescriptorBindings::create(*device_, *packed);
+  auto textures = DrawTextures::create(*device_, *resolved_textures);
+  if (!textures) return std::unexpected(textures.error());
+  if (!textures->empty()) {
+    // Its own submission, before the pipeline exists: uploads are not build or draw time.
+    auto uploaded = device_->submit_and_wait([&](VkCommandBuffer commands) { textures->record_uploads(commands); });
+    if (!uploaded) {
+      if (device_->lost()) abandon(std::move(*textures));
+      return std::unexpected(uploaded.error());
+    }
+    textures->release_staging();
+  }
+  auto bindings = DescriptorBindings::create(*device_, *packed, textures->descriptors());
   if (!bindings) return std::unexpected(bindings.error());
   auto vertices = upload(*device_, std::as_bytes(std::span(job.mesh.vertices)), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
   if (!vertices) return std::unexpected(vertices.error());
@@ -178,7 +195,8 @@ Result<RenderOutput> VulkanRenderer::render(const DrawJob& job) {
   const auto build_start = Clock::now();
   auto pipeline = GraphicsPipeline::create(*device_, render_pass_.get(), job.program, *vertex_input, bindings->set_layouts());
   if (!pipeline) return std::unexpected(pipeline.error());
-  DrawResources draw{std::move(*bindings), std::move(*pipeline), std::move(*vertices), std::move(*indices)};
+  DrawResources draw{std::move(*textures), std::move(*bindings), std::move(*pipeline), std::move(*vertices),
+                     std::move(*indices)};
   // lavapipe translates the pipeline's shaders to machine code (LLVM) only when a draw
   // first uses them, so vkCreateGraphicsPipelines alone measures almost nothing and the
   // compile would be billed to draw_ms. A first draw of one triangle, scissored to one

@@ -1,7 +1,7 @@
 #pragma once
 // shaderbed's Vulkan backend on lavapipe: one device for the backend's lifetime, a
-// render target per image size, and per draw a pipeline, descriptor sets and mesh
-// buffers that are destroyed when the draw has been read back.
+// render target per image size, and per draw a pipeline, descriptor sets, lookup
+// textures and mesh buffers that are destroyed when the draw has been read back.
 #include <map>
 #include <memory>
 #include <optional>

@@ -19,6 +19,7 @@ struct RunOptions {
   std::vector<std::string> backends;     // empty = vulkan, gl
   std::vector<std::string> languages;    // empty = every language a case has
   std::vector<std::string> shapes;       // empty = sphere, cube, cone, torus
+  std::vector<std::string> params;       // "name=value[,value...]" overrides
   int size = 256;
   std::string out_dir;                   // images go here; empty = no images
   std::function<void(size_t done, size_t total, const CellResult&)> on_cell;   // progress

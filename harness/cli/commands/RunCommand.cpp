@@ -1,0 +1,81 @@
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "cli/commands/Command.h"
+#include "cli/run/Runner.h"
+#include "report/ConsoleTable.h"
+#include "report/JsonReport.h"
+
+namespace shaderbed {
+namespace {
+
+// "[ 42/140]  12.3 s  ETA 28 s" on one refreshed line, only on a terminal.
+class Progress {
+ public:
+  Progress() : tty_(isatty(STDERR_FILENO)), start_(std::chrono::steady_clock::now()) {}
+  void update(size_t done, size_t total) {
+    if (!tty_) return;
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    const double eta = done ? elapsed / done * (total - done) : 0;
+    fmt::print(stderr, "\r[{:>4}/{}] {:6.1f} s  ETA {:5.1f} s", done, total, elapsed, eta);
+    if (done == total) fmt::print(stderr, "\r{:60}\r", "");
+  }
+
+ private:
+  bool tty_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+struct RunArguments {
+  RunOptions options;
+  std::string json_path;
+};
+
+}  // namespace
+
+Command add_run_command(CLI::App& app) {
+  auto args = std::make_shared<RunArguments>();
+  RunOptions& run = args->options;
+  CLI::App* cmd = app.add_subcommand("run", "Render the suite's cells and compare them with the reference");
+  cmd->add_option("--case", run.cases, "Case names (shaders/cases/NAME.toml); default: all")->delimiter(',');
+  cmd->add_option("--variant", run.variants, "Variants: vertex, pixel, pixel_lut; default: all")->delimiter(',');
+  cmd->add_option("--backend", run.backends, "Backends: vulkan, gl; default: both")->delimiter(',');
+  cmd->add_option("--lang", run.languages, "Languages: hlsl, glsl, cg; default: every language a case has")
+      ->delimiter(',');
+  cmd->add_option("--shape", run.shapes, "Shapes: sphere, cube, cone, torus; default: all")->delimiter(',');
+  cmd->add_option("--param", run.params,
+                  "Override a case parameter: name=value or name=v1,v2,v3 (repeatable), e.g. --param power=20");
+  cmd->add_option("--size", run.size, "Image width and height in pixels")->capture_default_str();
+  cmd->add_option("--out", run.out_dir, "Folder for renders, references and error images (EXR + PNG)");
+  cmd->add_option("--json", args->json_path, "Write the results as JSON to this file");
+  cmd->add_option("--cases-dir", run.cases_dir, "Folder of case files")->default_str(default_cases_dir());
+
+  return {cmd, [args] {
+            Progress progress;
+            RunOptions options = args->options;
+            options.on_cell = [&](size_t done, size_t total, const CellResult&) { progress.update(done, total); };
+            auto report = run_suite(options);
+            if (!report) {
+              fmt::print(stderr, "shaderbed: {}\n", report.error().to_string());
+              return kExitBadInput;
+            }
+            print_table(*report, stdout);
+            if (!args->json_path.empty()) {
+              if (auto ok = write_json(*report, args->json_path); !ok) {
+                fmt::print(stderr, "shaderbed: {}\n", ok.error().to_string());
+                return kExitFail;
+              }
+              fmt::print("results: {}\n", std::filesystem::absolute(args->json_path).string());
+            }
+            if (!options.out_dir.empty())
+              fmt::print("images: {}/<case>/<variant>/<shape>/\n", std::filesystem::absolute(options.out_dir).string());
+            return report->count("pass") == report->results.size() ? 0 : kExitFail;
+          }};
+}
+
+}  // namespace shaderbed

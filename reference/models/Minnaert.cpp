@@ -1,0 +1,42 @@
+// Minnaert (book §5.7.2, shaders §7.4): D (sat(N·V) sat(N·L))^k sat(N·L), k =
+// `minnaert_power` = m - 1. The shader's form with the irradiance factor (errata E5);
+// each dot clamped before the product, so the unlit half is 0, not NaN (errata E10).
+#include <cmath>
+
+#include "reference/Parameters.h"
+#include "reference/models/Models.h"
+#include "reference/models/Shading.h"
+
+namespace reference {
+namespace {
+
+using shading::sat;
+
+class Minnaert final : public LightingModel {
+ public:
+  Minnaert(const glm::dvec3& diffuse, double power) : diffuse_(diffuse), power_(power) {}
+
+  glm::dvec3 shade(const SurfacePoint& point, const ObjectSpaceLighting& lighting) const override {
+    const double n_dot_l = sat(glm::dot(point.normal, lighting.light_direction));
+    const double n_dot_v = sat(glm::dot(point.normal, shading::to_eye(point, lighting)));
+    return diffuse_ * (std::pow(n_dot_v * n_dot_l, power_) * n_dot_l);
+  }
+
+ private:
+  glm::dvec3 diffuse_;
+  double power_;
+};
+
+}  // namespace
+
+Params minnaert_defaults() { return {{"diffuse", {1, 1, 1}}, {"minnaert_power", {0.8}}}; }
+
+ModelOrError make_minnaert(const Params& params) {
+  ParameterReader reader("minnaert", params);
+  const glm::dvec3 diffuse = reader.colour("diffuse");
+  const double power = reader.scalar("minnaert_power");
+  if (auto error = reader.error()) return std::unexpected(*error);
+  return std::make_unique<Minnaert>(diffuse, power);
+}
+
+}  // namespace reference

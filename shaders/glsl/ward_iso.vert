@@ -1,0 +1,39 @@
+// Ward isotropic, per vertex (book §5.8.1, §7.5.1): (D + S exp(-tan^2(g)/s^2) / (4 pi s^2) / sqrt(N.L N.V)) max(0,N.L).
+#version 450
+
+layout(location = 0) in vec3 position;
+layout(location = 1) in vec3 normal;
+
+layout(std140, binding = 0) uniform WardVertex {
+    mat4 modelViewProjection;
+    vec3 lightDirection;   // object space, unit, toward the light
+    vec3 eyePosition;      // object space
+    vec3 diffuseColor;
+    vec3 specularColor;
+    float roughness;       // sigma
+};
+
+layout(location = 0) out vec3 vertexColor;
+
+const float pi = 3.14159265358979;
+
+void main()
+{
+    vec3 toEye = normalize(eyePosition - position);
+    vec3 halfVector = normalize(lightDirection + toEye);
+    float nDotL = dot(normal, lightDirection);
+    float nDotV = dot(normal, toEye);
+
+    // The BRDF lives on the upper hemisphere: 1/sqrt(N.L N.V) is NaN or infinite elsewhere (errata E4).
+    vec3 specular = vec3(0.0);
+    if (nDotL > 0.0 && nDotV > 0.0) {
+        float nDotH = dot(normal, halfVector);
+        float nDotH2 = nDotH * nDotH;
+        float tanGamma2 = (1.0 - nDotH2) / nDotH2;   // tan^2(acos(N.H)) without trig (errata E2)
+        float sigma2 = roughness * roughness;
+        // Ward's normalisation 1/(4 pi sigma^2), not the book's 2 pi (errata E2).
+        specular = specularColor * (exp(-tanGamma2 / sigma2) / (4.0 * pi * sigma2) / sqrt(nDotL * nDotV));
+    }
+    vertexColor = (diffuseColor + specular) * max(nDotL, 0.0);
+    gl_Position = modelViewProjection * vec4(position, 1.0);
+}
