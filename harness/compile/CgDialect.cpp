@@ -5,7 +5,6 @@
 #include <cctype>
 #include <map>
 #include <optional>
-#include <unordered_map>
 
 #include "compile/CgTokens.h"
 
@@ -253,7 +252,7 @@ Result<CgTranslation> translate_cg(std::string_view preprocessed, const std::str
   int paren_depth = 0;
   int pending_ternaries = 0;
   bool in_case_label = false;
-  std::unordered_map<std::size_t, std::string> semantic_at;  // token index -> mapped semantic
+  std::map<std::size_t, std::string> semantic_at;  // token index -> mapped semantic, in source order
 
   for (std::size_t i = 0; i < t.size(); ++i) {
     Token& tok = t[i];

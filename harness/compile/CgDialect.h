@@ -24,8 +24,8 @@
 // parameters are hoisted to globals so they get distinct bindings); `varying`; `lit`
 // (a correct helper: glslang 12 miscompiles lit); tex1D/tex2D/tex3D/texCUBE with their
 // lod/bias/grad forms, tex3Dproj; semantics POSITION/HPOS, COLOR/COL, COLOR0-1/COL0-1,
-// TEXCOORD0-7/TEX0-7, NORMAL, TANGENT, BINORMAL, WPOS (the target API's fragment
-// coordinate: origin top-left on Vulkan, bottom-left on GL), FACE (on an entry
+// TEXCOORD0-7/TEX0-7, NORMAL, TANGENT, BINORMAL, WPOS (the fragment coordinate, origin
+// upper left as glslang's HLSL declares it), FACE (on an entry
 // parameter: +1 front, -1 back, as Cg), DEPTH/DEPR, PSIZE/PSIZ (vertex output),
 // TEXUNITn (sampler unit -> register(sN)), ATTR0-15 (vertex inputs, NVIDIA's aliasing:
 // 0 POSITION, 2 NORMAL, 3/4 COLOR0/1, 8-15 TEXCOORD0-7 with 14 TANGENT, 15 BINORMAL).
@@ -36,7 +36,16 @@
 // buffer textures (samplerBUF, texBUF*), typed lookups (f1tex2D, h4tex2D ...), Cg
 // interfaces, `packed`, unsized array parameters, pack_*/unpack_*, noise (crashes
 // glslang), semantics BCOL0/BCOL1, FOG/FOGP/FOGC/FOGCOORD, CLP0-5, PSIZE on a fragment
-// input, and the depth-compare lookup form tex2D(sampler2D, float3) (caught on the AST).
+// input, WPOS/FACE in a vertex program, FACE inside a struct, ATTRn in a fragment
+// program, and the depth-compare lookup form tex2D(sampler2D, float3) (caught on the
+// AST). A varying without a semantic, or with one that is not a Cg varying (NORMAL as a
+// vertex output), and varyings whose locations overlap are errors too: Cg would reject
+// them, and glslang would link them by declaration order instead.
+//
+// Known differences that are not errors: WPOS has its origin upper left (as Cg's D3D
+// profiles; Cg's OpenGL profiles put it lower left); COLOR outputs are not clamped to [0, 1] as
+// arbvp1 did (errata E13); Cg runtime calls (cgSetParameter...) are the harness's
+// uniform binding by name.
 #include <cstdint>
 #include <string>
 #include <string_view>

@@ -35,10 +35,12 @@ Result<ShaderModule> compile_stage(Language language, const ShaderSource& source
   if (auto ok = validate_spirv(*spirv, target, source.path); !ok) return std::unexpected(ok.error());
   auto reflection = reflect_spirv(*spirv, language, source.stage);
   if (!reflection) return std::unexpected(std::move(reflection.error()).in_file(source.path));
+  auto driver_spirv = strip_reflection_info(*spirv, target);
+  if (!driver_spirv) return std::unexpected(std::move(driver_spirv.error()).in_file(source.path));
   return ShaderModule{.stage = source.stage,
                       .source_file = source.path,
                       .entry_point = source.entry_point,
-                      .spirv = std::move(*spirv),
+                      .spirv = std::move(*driver_spirv),
                       .reflection = std::move(*reflection)};
 }
 

@@ -103,6 +103,9 @@ Result<std::vector<uint32_t>> glslang_to_spirv(Language language, const ShaderSo
                      glslang::EResSsbo, glslang::EResUav})
       shader.setShiftBinding(res, kFragmentBindingBase);
   }
+  // GL-target SPIR-V gives loose uniforms (samplers) locations, counted from 0 in each
+  // stage: a program sampling in both stages would collide, so fragments start at 64.
+  if (target == Target::opengl && source.stage == Stage::fragment) shader.setUniformLocationBase(64);
 
   const auto msgs = static_cast<EShMessages>(messages);
   if (!shader.parse(GetDefaultResources(), 100, false, msgs))

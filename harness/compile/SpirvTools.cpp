@@ -41,6 +41,14 @@ Result<std::vector<uint32_t>> optimize_spirv(const std::vector<uint32_t>& spirv,
   return out;
 }
 
+Result<std::vector<uint32_t>> strip_reflection_info(const std::vector<uint32_t>& spirv, Target target) {
+  spvtools::Optimizer optimizer(to_env(target));
+  optimizer.RegisterPass(spvtools::CreateStripReflectInfoPass());
+  std::vector<uint32_t> out;
+  if (!optimizer.Run(spirv.data(), spirv.size(), &out)) return fail("optimize", "stripping reflection info failed");
+  return out;
+}
+
 std::string disassemble(const std::vector<uint32_t>& spirv) {
   spvtools::SpirvTools tools(SPV_ENV_UNIVERSAL_1_5);
   std::string text;

@@ -1,13 +1,14 @@
 // The Cg dialect layer (harness/compile/CgDialect.h) on real glslang: every Cg shader of
 // the library compiles, Cg's types, semantics, uniform parameters and #include work,
 // and every unsupported Cg construct is one named error at its file and line.
-#include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "compile/CgDialect.h"
 #include "compile/Compiler.h"

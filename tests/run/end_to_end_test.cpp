@@ -1,8 +1,10 @@
 // End to end on the real drivers: the default suite passes on every backend and GL
 // path, a planted bug fails, and the CLI's exit codes and JSON are what CI relies on.
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <tuple>
 
@@ -41,13 +43,53 @@ TEST(EndToEnd, DefaultSuitePassesOnEveryBackendAndGlPath) {
     shapes.insert(r.shape);
     EXPECT_GT(r.metrics.interior_pixels, 1000u) << "a blank or tiny image would compare trivially";
   }
-  // GLSL runs on Vulkan and all three GL paths; HLSL everywhere but native GLSL.
+  // GLSL runs on Vulkan and all three GL paths; HLSL and Cg everywhere but native GLSL.
   const std::set<std::tuple<std::string, std::string, std::string>> expected{
-      {"glsl", "vulkan", "spirv"}, {"glsl", "gl", "glsl"}, {"glsl", "gl", "spirv"}, {"glsl", "gl", "cross"},
-      {"hlsl", "vulkan", "spirv"}, {"hlsl", "gl", "spirv"}, {"hlsl", "gl", "cross"}};
+      {"glsl", "vulkan", "spirv"}, {"glsl", "gl", "glsl"},  {"glsl", "gl", "spirv"}, {"glsl", "gl", "cross"},
+      {"hlsl", "vulkan", "spirv"}, {"hlsl", "gl", "spirv"}, {"hlsl", "gl", "cross"}, {"cg", "vulkan", "spirv"},
+      {"cg", "gl", "spirv"},       {"cg", "gl", "cross"}};
   EXPECT_EQ(language_backend_path, expected);
-  EXPECT_TRUE(cases.contains("ambient") && cases.contains("lambert") && cases.contains("phong"));
   EXPECT_EQ(shapes.size(), 4u);
+  // The whole library, with the LUT variants where the book has them.
+  const std::set<std::string> library{"ambient",  "lambert",    "warn",     "phong",      "blinn_phong",
+                                      "oren_nayar", "minnaert", "ward_iso", "ward_aniso", "schlick",
+                                      "cook_torrance", "point_attenuated", "spot"};
+  EXPECT_EQ(cases, library);
+  std::map<std::pair<std::string, std::string>, double> lut_error;   // largest over shapes and paths
+  for (const CellResult& r : report->results)
+    if (r.variant == "pixel_lut") {
+      EXPECT_FALSE(r.lut_derivation.empty()) << "a LUT threshold is derived, not typed in";
+      double& e = lut_error[{r.case_name, r.language}];
+      e = std::max(e, r.metrics.max_abs);
+    }
+  EXPECT_EQ(lut_error.size(), 3u * 3u) << "warn, oren_nayar and ward_iso in hlsl, cg and glsl";
+  for (const auto& [key, error] : lut_error)
+    EXPECT_GT(error, 1e-4) << key.first << "/" << key.second << ": LUT renders equal to the analytic model mean no LUT";
+}
+
+TEST(EndToEnd, EvalPrintsTheReferenceValue) {
+  auto [status, out] = shaderbed_cli("eval phong --L 0,1,0 --V 1,1,0");
+  ASSERT_EQ(status, 0) << out;
+  // N = +Y = L, so R = L and R.V = cos 45: 1 (diffuse) + cos(45)^7 (specular).
+  const double expected = 1 + std::pow(std::sqrt(0.5), 7);
+  const size_t at = out.find("rgb = ");
+  ASSERT_NE(at, std::string::npos) << out;
+  EXPECT_NEAR(std::stod(out.substr(at + 6)), expected, 1e-15);
+  auto [bad_status, bad] = shaderbed_cli("eval phong --L 0,1,0 --V 1,1,0 --param pwer=3");
+  EXPECT_EQ(bad_status, 2);
+  EXPECT_NE(bad.find("pwer"), std::string::npos) << bad;
+}
+
+TEST(EndToEnd, ParamOverrideReachesShadersAndReference) {
+  // A different exponent changes both sides; they must still agree.
+  RunOptions o;
+  o.cases = {"phong"};
+  o.variants = {"pixel"};
+  o.shapes = {"sphere"};
+  o.params = {"power=30", "diffuse=0.5,0.25,1"};
+  auto report = run_suite(o);
+  ASSERT_TRUE(report) << report.error().to_string();
+  for (const CellResult& r : report->results) EXPECT_EQ(r.status, "pass") << r.language << " " << r.message;
 }
 
 TEST(EndToEnd, PlantedReflectionSignBugFailsEveryCell) {
@@ -76,8 +118,8 @@ TEST(EndToEnd, CliPassesWritesJsonAndImages) {
   const nlohmann::json j = nlohmann::json::parse(in);
   for (const char* key : {"glslang", "spirv_tools", "spirv_cross", "mesa"}) EXPECT_TRUE(j["tool"].contains(key)) << key;
   EXPECT_NE(j["tool"]["mesa"]["vulkan"].get<std::string>().find("Mesa"), std::string::npos);
-  // 2 variants x 2 languages x 2 shapes x (GLSL: 4 paths, HLSL: 3 paths) / 2 languages.
-  ASSERT_EQ(j["results"].size(), 2u * 2u * (4u + 3u));
+  // 2 variants x 2 shapes x (GLSL: 4 paths, HLSL: 3, Cg: 3).
+  ASSERT_EQ(j["results"].size(), 2u * 2u * (4u + 3u + 3u));
   for (const auto& r : j["results"]) {
     for (const char* key : {"case", "variant", "language", "backend", "path", "shape", "status", "metrics", "time_ms"})
       EXPECT_TRUE(r.contains(key)) << key;
