@@ -37,7 +37,7 @@ void print_table(const RunReport& report, std::FILE* out) {
     if (!header) fmt::print(out, "\nfailures:\n");
     header = true;
     fmt::print(out, "  {} {} {} {}/{} {}: {}{}\n", r.case_name, r.variant, r.language, r.backend, r.path, r.shape, r.message,
-               r.image.empty() ? "" : " (" + r.image + ")");
+               r.artefacts.render_exr.empty() ? "" : " (" + r.artefacts.render_exr + ")");
   }
   fmt::print(out, "\n{} cells: {} passed, {} failed, {} errors in {:.1f} s\n", report.results.size(), report.count("pass"),
              report.count("fail"), report.count("error"), report.wall_ms / 1000.0);

@@ -40,7 +40,7 @@ std::string to_json(const RunReport& report) {
     cell["tolerance"] = {{"interior", r.interior_threshold}, {"silhouette", r.silhouette_threshold}};
     if (!r.lut_derivation.empty()) cell["tolerance"]["lut"] = {{"bound", r.lut_bound}, {"derivation", r.lut_derivation}};
     cell["time_ms"] = r.time_ms;
-    if (!r.image.empty()) cell["image"] = r.image;
+    if (!r.artefacts.render_exr.empty()) cell["image"] = r.artefacts.render_exr;
     j["results"].push_back(std::move(cell));
   }
   return j.dump(2);

@@ -1,39 +1,78 @@
 #pragma once
 // The results model every report reads: one CellResult per case x variant x language x
-// backend x path x shape, plus the toolchain that produced them.
+// backend x path x shape, plus the toolchain that produced them. JSON (write and read),
+// JUnit, HTML and the console table are views of this.
 #include <map>
 #include <string>
 #include <vector>
 
 namespace shaderbed {
 
+constexpr int kResultsSchemaVersion = 2;
+
+// Per-image counts of values a lighting shader should not produce.
+struct ValueCounts {
+  size_t nan = 0;
+  size_t pos_inf = 0;
+  size_t neg_inf = 0;
+  size_t negative = 0;     // finite and < 0
+  size_t above_one = 0;    // finite and > 1 (legitimate for some models; reported, not judged)
+};
+
 struct CellMetrics {
   double max_abs = 0;               // interior
   double rmse = 0;                  // interior
   double psnr = 0;                  // interior, peak 1
   size_t bad_pixels = 0;            // interior + silhouette
-  size_t nonfinite = 0;
+  size_t nonfinite = 0;             // NaN/Inf in drawn pixels of the render
+  size_t nonfinite_mismatch = 0;    // NaN/Inf where the reference is finite, or the reverse
   size_t coverage_mismatch = 0;
   double silhouette_max_abs = 0;
   size_t interior_pixels = 0;
   size_t silhouette_pixels = 0;
+  size_t covered_pixels = 0;        // drawn by the render
+  size_t reference_covered_pixels = 0;
+  double expected_area = 0;         // the shape's projected area in pixels, from the mesh
+  // The smallest thresholds that would have passed this cell (what tightening can reach).
+  double min_passing_interior = 0;
+  double min_passing_silhouette = 0;
+  ValueCounts render_values;
+  ValueCounts reference_values;
+};
+
+struct CellArtefacts {                // paths under the run's --out folder ("" = not written)
+  std::string render_exr, render_png, error_exr, error_png, reference_png;
+  std::string vertex_spirv, fragment_spirv;            // disassembly (.spvasm)
+  std::string vertex_cross_glsl, fragment_cross_glsl;  // SPIRV-Cross output
 };
 
 struct CellResult {
   std::string case_name, variant, language, backend, path, shape;
   std::string status;               // "pass", "fail" or "error"
   std::string message;              // why it failed / the error line
+  // Failures: which stage the evidence points at ("front end", "cross-compiler",
+  // "driver", "model/reference", "unclear") and why; "" for passes.
+  std::string attribution;
+  std::string attribution_reason;
+  // A failure listed in the expectations file: still "fail", but known, with its reason.
+  bool known_failure = false;
+  std::string known_reason;
   CellMetrics metrics;
   double interior_threshold = 0;    // the case's tolerance
   double silhouette_threshold = 0;
   double lut_bound = 0;             // LUT variants: the derived LUT error bound in the threshold
   std::string lut_derivation;
   std::map<std::string, double> time_ms;   // compile, build, draw, readback, reference, compare
-  std::string image;                // path of the render's EXR, if written
+  std::string vertex_spirv_hash, fragment_spirv_hash;   // hex FNV-1a 64 of the driver SPIR-V
+  CellArtefacts artefacts;
+
+  std::string id() const {          // stable identity: sharding, expectations, merging
+    return case_name + "/" + variant + "/" + language + "/" + backend + "/" + path + "/" + shape;
+  }
 };
 
 struct ToolVersions {
-  std::string glslang, spirv_tools, spirv_cross, vulkan_driver, gl_driver;
+  std::string glslang, spirv_tools, spirv_cross, vulkan_driver, gl_driver, llvm;
 };
 
 struct RunReport {
@@ -41,11 +80,18 @@ struct RunReport {
   std::vector<CellResult> results;
   double wall_ms = 0;
   std::string out_dir;
+  std::string shard;                // "I/N" when this is one shard of a run, else ""
 
   size_t count(const std::string& status) const {
     size_t n = 0;
     for (const CellResult& r : results) n += r.status == status;
     return n;
+  }
+  // Every cell passed or is a known failure.
+  bool acceptable() const {
+    for (const CellResult& r : results)
+      if (r.status != "pass" && !(r.status == "fail" && r.known_failure)) return false;
+    return true;
   }
 };
 

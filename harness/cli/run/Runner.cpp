@@ -309,13 +309,17 @@ Result<RunReport> run_suite(const RunOptions& o) {
     if (!o.out_dir.empty()) {
       const fs::path dir = fs::path(o.out_dir) / c.name / cell.variant->name / cell.shape;
       const std::string stem = fmt::format("{}-{}-{}", lang, cell.backend->name, to_string(cell.path));
-      r.image = (dir / (stem + ".exr")).string();
+      r.artefacts.render_exr = (dir / (stem + ".exr")).string();
+      r.artefacts.render_png = (dir / (stem + ".png")).string();
+      r.artefacts.error_exr = (dir / (stem + ".error.exr")).string();
+      r.artefacts.error_png = (dir / (stem + ".error.png")).string();
+      r.artefacts.reference_png = (dir / "reference.png").string();
       bool written_all = true;
-      for (auto written : {write_exr(r.image, scene.width, scene.height, rendered->image.rgba),
-                           write_png((dir / (stem + ".png")).string(), rendered->image),
-                           write_exr((dir / (stem + ".error.exr")).string(), scene.width, scene.height, cmp.error.rgba),
+      for (auto written : {write_exr(r.artefacts.render_exr, scene.width, scene.height, rendered->image.rgba),
+                           write_png(r.artefacts.render_png, rendered->image),
+                           write_exr(r.artefacts.error_exr, scene.width, scene.height, cmp.error.rgba),
                            // Error heat map: the interior tolerance shows as mid grey.
-                           write_png((dir / (stem + ".error.png")).string(), cmp.error,
+                           write_png(r.artefacts.error_png, cmp.error,
                                      float(0.5 / std::max(interior_tolerance, 1e-12)))})
         if (written_all && !written) {
           written_all = false;
