@@ -3,46 +3,285 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
+#include <regex>
+#include <sstream>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 namespace shaderbed {
 namespace {
 
-// JSON has no Inf/NaN: a non-finite metric is written as null.
-nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+using ojson = nlohmann::ordered_json;
+using json = nlohmann::json;
+
+// JSON has no Inf/NaN: non-finite numbers become strings the reader turns back.
+ojson number(double v) {
+  if (std::isnan(v)) return "nan";
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  return v;
+}
+
+ojson value_counts(const ValueCounts& v) {
+  return {{"nan", v.nan}, {"pos_inf", v.pos_inf}, {"neg_inf", v.neg_inf}, {"negative", v.negative}, {"above_one", v.above_one}};
+}
+
+ojson cell_json(const CellResult& r) {
+  const CellMetrics& m = r.metrics;
+  const CellArtefacts& a = r.artefacts;
+  ojson cell = {{"id", r.id()},
+                {"case", r.case_name},
+                {"variant", r.variant},
+                {"language", r.language},
+                {"backend", r.backend},
+                {"path", r.path},
+                {"shape", r.shape},
+                {"status", r.status},
+                {"message", r.message}};
+  cell["attribution"] = {{"verdict", r.attribution}, {"reason", r.attribution_reason}};
+  cell["known_failure"] = {{"known", r.known_failure}, {"reason", r.known_reason}};
+  cell["metrics"] = {{"max_abs", number(m.max_abs)},
+                     {"rmse", number(m.rmse)},
+                     {"psnr", number(m.psnr)},
+                     {"bad_pixels", m.bad_pixels},
+                     {"nonfinite", m.nonfinite},
+                     {"nonfinite_mismatch", m.nonfinite_mismatch},
+                     {"coverage_mismatch", m.coverage_mismatch},
+                     {"silhouette_max_abs", number(m.silhouette_max_abs)},
+                     {"min_passing", {{"interior", number(m.min_passing_interior)}, {"silhouette", number(m.min_passing_silhouette)}}},
+                     {"coverage",
+                      {{"interior_pixels", m.interior_pixels},
+                       {"silhouette_pixels", m.silhouette_pixels},
+                       {"covered_pixels", m.covered_pixels},
+                       {"reference_covered_pixels", m.reference_covered_pixels},
+                       {"expected_area", number(m.expected_area)}}},
+                     {"values", {{"render", value_counts(m.render_values)}, {"reference", value_counts(m.reference_values)}}}};
+  cell["tolerance"] = {{"interior", number(r.interior_threshold)},
+                       {"silhouette", number(r.silhouette_threshold)},
+                       {"lut", {{"bound", number(r.lut_bound)}, {"derivation", r.lut_derivation}}}};
+  ojson times = ojson::object();
+  for (const auto& [stage, ms] : r.time_ms) times[stage] = number(ms);
+  cell["time_ms"] = std::move(times);
+  cell["spirv_hash"] = {{"vertex", r.vertex_spirv_hash}, {"fragment", r.fragment_spirv_hash}};
+  cell["artefacts"] = {{"render_exr", a.render_exr},         {"render_png", a.render_png},
+                       {"error_exr", a.error_exr},           {"error_png", a.error_png},
+                       {"reference_png", a.reference_png},   {"vertex_spirv", a.vertex_spirv},
+                       {"fragment_spirv", a.fragment_spirv}, {"vertex_cross_glsl", a.vertex_cross_glsl},
+                       {"fragment_cross_glsl", a.fragment_cross_glsl}};
+  if (!a.render_exr.empty()) cell["image"] = a.render_exr;   // schema 1 name, kept for old readers
+  return cell;
+}
+
+// ---- reading -----------------------------------------------------------------------------
+
+// A field with the wrong type or value; caught in parse_json and turned into an Error.
+struct BadField {
+  std::string pointer, message;
+};
+
+std::string child(const std::string& pointer, std::string_view key) { return pointer + "/" + std::string(key); }
+
+const json* member(const json& object, std::string_view key) {
+  auto it = object.find(key);
+  return it == object.end() ? nullptr : &*it;
+}
+
+const json* object_at(const json& parent, std::string_view key, const std::string& pointer) {
+  const json* v = member(parent, key);
+  if (v && !v->is_object()) throw BadField{child(pointer, key), "expected an object, found " + std::string(v->type_name())};
+  return v;
+}
+
+void read(const json& parent, std::string_view key, const std::string& pointer, std::string& out) {
+  const json* v = member(parent, key);
+  if (!v) return;
+  if (!v->is_string()) throw BadField{child(pointer, key), "expected a string, found " + std::string(v->type_name())};
+  out = v->get<std::string>();
+}
+
+double to_double(const json& v, const std::string& where) {
+  if (v.is_number()) return v.get<double>();
+  if (v.is_null()) return std::numeric_limits<double>::quiet_NaN();
+  if (v.is_string()) {
+    const std::string s = v.get<std::string>();
+    if (s == "nan") return std::numeric_limits<double>::quiet_NaN();
+    if (s == "inf") return std::numeric_limits<double>::infinity();
+    if (s == "-inf") return -std::numeric_limits<double>::infinity();
+  }
+  throw BadField{where, "expected a number (or \"inf\", \"-inf\", \"nan\"), found " + v.dump()};
+}
+
+void read(const json& parent, std::string_view key, const std::string& pointer, double& out) {
+  if (const json* v = member(parent, key)) out = to_double(*v, child(pointer, key));
+}
+
+void read(const json& parent, std::string_view key, const std::string& pointer, size_t& out) {
+  const json* v = member(parent, key);
+  if (!v) return;
+  if (v->is_number_unsigned()) out = v->get<size_t>();
+  else if (v->is_number_integer() && v->get<long long>() >= 0) out = size_t(v->get<long long>());
+  else throw BadField{child(pointer, key), "expected a count (integer >= 0), found " + v->dump()};
+}
+
+void read(const json& parent, std::string_view key, const std::string& pointer, bool& out) {
+  const json* v = member(parent, key);
+  if (!v) return;
+  if (!v->is_boolean()) throw BadField{child(pointer, key), "expected true or false, found " + v->dump()};
+  out = v->get<bool>();
+}
+
+void read_required(const json& parent, std::string_view key, const std::string& pointer, std::string& out) {
+  if (!member(parent, key)) throw BadField{child(pointer, key), "missing"};
+  read(parent, key, pointer, out);
+}
+
+void read_counts(const json& parent, std::string_view key, const std::string& pointer, ValueCounts& v) {
+  const json* o = object_at(parent, key, pointer);
+  if (!o) return;
+  const std::string p = child(pointer, key);
+  read(*o, "nan", p, v.nan);
+  read(*o, "pos_inf", p, v.pos_inf);
+  read(*o, "neg_inf", p, v.neg_inf);
+  read(*o, "negative", p, v.negative);
+  read(*o, "above_one", p, v.above_one);
+}
+
+CellResult read_cell(const json& c, const std::string& p) {
+  if (!c.is_object()) throw BadField{p, "expected a result object, found " + std::string(c.type_name())};
+  CellResult r;
+  read_required(c, "case", p, r.case_name);
+  read_required(c, "variant", p, r.variant);
+  read_required(c, "language", p, r.language);
+  read_required(c, "backend", p, r.backend);
+  read_required(c, "path", p, r.path);
+  read_required(c, "shape", p, r.shape);
+  read_required(c, "status", p, r.status);
+  if (r.status != "pass" && r.status != "fail" && r.status != "error")
+    throw BadField{child(p, "status"), "expected \"pass\", \"fail\" or \"error\", found \"" + r.status + "\""};
+  read(c, "message", p, r.message);
+  if (const json* a = object_at(c, "attribution", p)) {
+    read(*a, "verdict", child(p, "attribution"), r.attribution);
+    read(*a, "reason", child(p, "attribution"), r.attribution_reason);
+  }
+  if (const json* k = object_at(c, "known_failure", p)) {
+    read(*k, "known", child(p, "known_failure"), r.known_failure);
+    read(*k, "reason", child(p, "known_failure"), r.known_reason);
+  }
+  if (const json* m = object_at(c, "metrics", p)) {
+    const std::string mp = child(p, "metrics");
+    CellMetrics& x = r.metrics;
+    read(*m, "max_abs", mp, x.max_abs);
+    read(*m, "rmse", mp, x.rmse);
+    read(*m, "psnr", mp, x.psnr);
+    read(*m, "bad_pixels", mp, x.bad_pixels);
+    read(*m, "nonfinite", mp, x.nonfinite);
+    read(*m, "nonfinite_mismatch", mp, x.nonfinite_mismatch);
+    read(*m, "coverage_mismatch", mp, x.coverage_mismatch);
+    read(*m, "silhouette_max_abs", mp, x.silhouette_max_abs);
+    if (const json* mp2 = object_at(*m, "min_passing", mp)) {
+      read(*mp2, "interior", child(mp, "min_passing"), x.min_passing_interior);
+      read(*mp2, "silhouette", child(mp, "min_passing"), x.min_passing_silhouette);
+    }
+    if (const json* cov = object_at(*m, "coverage", mp)) {
+      const std::string cp = child(mp, "coverage");
+      read(*cov, "interior_pixels", cp, x.interior_pixels);
+      read(*cov, "silhouette_pixels", cp, x.silhouette_pixels);
+      read(*cov, "covered_pixels", cp, x.covered_pixels);
+      read(*cov, "reference_covered_pixels", cp, x.reference_covered_pixels);
+      read(*cov, "expected_area", cp, x.expected_area);
+    }
+    if (const json* v = object_at(*m, "values", mp)) {
+      read_counts(*v, "render", child(mp, "values"), x.render_values);
+      read_counts(*v, "reference", child(mp, "values"), x.reference_values);
+    }
+  }
+  if (const json* t = object_at(c, "tolerance", p)) {
+    const std::string tp = child(p, "tolerance");
+    read(*t, "interior", tp, r.interior_threshold);
+    read(*t, "silhouette", tp, r.silhouette_threshold);
+    if (const json* lut = object_at(*t, "lut", tp)) {
+      read(*lut, "bound", child(tp, "lut"), r.lut_bound);
+      read(*lut, "derivation", child(tp, "lut"), r.lut_derivation);
+    }
+  }
+  if (const json* t = object_at(c, "time_ms", p))
+    for (const auto& [stage, ms] : t->items()) r.time_ms[stage] = to_double(ms, child(child(p, "time_ms"), stage));
+  if (const json* h = object_at(c, "spirv_hash", p)) {
+    read(*h, "vertex", child(p, "spirv_hash"), r.vertex_spirv_hash);
+    read(*h, "fragment", child(p, "spirv_hash"), r.fragment_spirv_hash);
+  }
+  if (const json* a = object_at(c, "artefacts", p)) {
+    const std::string ap = child(p, "artefacts");
+    CellArtefacts& x = r.artefacts;
+    read(*a, "render_exr", ap, x.render_exr);
+    read(*a, "render_png", ap, x.render_png);
+    read(*a, "error_exr", ap, x.error_exr);
+    read(*a, "error_png", ap, x.error_png);
+    read(*a, "reference_png", ap, x.reference_png);
+    read(*a, "vertex_spirv", ap, x.vertex_spirv);
+    read(*a, "fragment_spirv", ap, x.fragment_spirv);
+    read(*a, "vertex_cross_glsl", ap, x.vertex_cross_glsl);
+    read(*a, "fragment_cross_glsl", ap, x.fragment_cross_glsl);
+  }
+  return r;
+}
+
+RunReport read_report(const json& j) {
+  if (!j.is_object()) throw BadField{"", "expected a results object, found " + std::string(j.type_name())};
+  const json* schema = member(j, "schema");
+  if (!schema) throw BadField{"/schema", "missing: not a shaderbed results file"};
+  if (!schema->is_number_integer())
+    throw BadField{"/schema", "expected an integer schema version, found " + schema->dump()};
+  if (const long long v = schema->get<long long>(); v != kResultsSchemaVersion)
+    throw BadField{"/schema", fmt::format("schema version {} is not supported: this shaderbed reads version {}{}", v,
+                                          kResultsSchemaVersion,
+                                          v < kResultsSchemaVersion ? "; re-run the cells with this shaderbed"
+                                                                    : "; use the shaderbed that wrote the file")};
+  RunReport report;
+  if (const json* t = object_at(j, "tool", "")) {
+    read(*t, "glslang", "/tool", report.tools.glslang);
+    read(*t, "spirv_tools", "/tool", report.tools.spirv_tools);
+    read(*t, "spirv_cross", "/tool", report.tools.spirv_cross);
+    read(*t, "llvm", "/tool", report.tools.llvm);
+    if (const json* mesa = object_at(*t, "mesa", "/tool")) {
+      read(*mesa, "vulkan", "/tool/mesa", report.tools.vulkan_driver);
+      read(*mesa, "gl", "/tool/mesa", report.tools.gl_driver);
+    }
+  }
+  read(j, "shard", "", report.shard);
+  read(j, "out_dir", "", report.out_dir);
+  read(j, "wall_ms", "", report.wall_ms);
+  const json* results = member(j, "results");
+  if (!results) throw BadField{"/results", "missing"};
+  if (!results->is_array()) throw BadField{"/results", "expected an array, found " + std::string(results->type_name())};
+  report.results.reserve(results->size());
+  for (size_t i = 0; i < results->size(); ++i) report.results.push_back(read_cell((*results)[i], "/results/" + std::to_string(i)));
+  return report;
+}
 
 }  // namespace
 
 std::string to_json(const RunReport& report) {
-  nlohmann::json j;
-  j["schema"] = 1;
+  ojson j;
+  j["schema"] = kResultsSchemaVersion;
   j["tool"] = {{"glslang", report.tools.glslang},
                {"spirv_tools", report.tools.spirv_tools},
                {"spirv_cross", report.tools.spirv_cross},
+               {"llvm", report.tools.llvm},
                {"mesa", {{"vulkan", report.tools.vulkan_driver}, {"gl", report.tools.gl_driver}}}};
-  j["wall_ms"] = report.wall_ms;
-  j["results"] = nlohmann::json::array();
-  for (const CellResult& r : report.results) {
-    nlohmann::json cell = {{"case", r.case_name}, {"variant", r.variant}, {"language", r.language},
-                           {"backend", r.backend}, {"path", r.path},      {"shape", r.shape},
-                           {"status", r.status}};
-    if (!r.message.empty()) cell["message"] = r.message;
-    cell["metrics"] = {{"max_abs", number(r.metrics.max_abs)},
-                       {"rmse", number(r.metrics.rmse)},
-                       {"psnr", number(r.metrics.psnr)},
-                       {"bad_pixels", r.metrics.bad_pixels},
-                       {"nonfinite", r.metrics.nonfinite},
-                       {"coverage_mismatch", r.metrics.coverage_mismatch},
-                       {"silhouette_max_abs", number(r.metrics.silhouette_max_abs)},
-                       {"interior_pixels", r.metrics.interior_pixels},
-                       {"silhouette_pixels", r.metrics.silhouette_pixels}};
-    cell["tolerance"] = {{"interior", r.interior_threshold}, {"silhouette", r.silhouette_threshold}};
-    if (!r.lut_derivation.empty()) cell["tolerance"]["lut"] = {{"bound", r.lut_bound}, {"derivation", r.lut_derivation}};
-    cell["time_ms"] = r.time_ms;
-    if (!r.artefacts.render_exr.empty()) cell["image"] = r.artefacts.render_exr;
-    j["results"].push_back(std::move(cell));
-  }
+  j["shard"] = report.shard;
+  j["out_dir"] = report.out_dir;
+  j["wall_ms"] = number(report.wall_ms);
+  size_t known = 0;
+  for (const CellResult& r : report.results) known += r.status == "fail" && r.known_failure;
+  j["totals"] = {{"cells", report.results.size()},
+                 {"pass", report.count("pass")},
+                 {"fail", report.count("fail") - known},
+                 {"known", known},
+                 {"error", report.count("error")}};
+  j["results"] = ojson::array();
+  for (const CellResult& r : report.results) j["results"].push_back(cell_json(r));
   return j.dump(2);
 }
 
@@ -55,6 +294,42 @@ Result<void> write_json(const RunReport& report, const std::string& path) {
   out << to_json(report) << '\n';
   if (!out) return std::unexpected(Error{.message = "write failed", .file = path, .stage = "report"});
   return {};
+}
+
+Result<RunReport> parse_json(std::string_view text, const std::string& file) {
+  json j;
+  try {
+    j = json::parse(text);
+  } catch (const json::parse_error& e) {
+    // "[json.exception.parse_error.101] parse error at line 3, column 7: syntax error ..."
+    Error err{.message = e.what(), .file = file, .stage = "report"};
+    static const std::regex where(R"(^\[json\.exception\.[a-z_.0-9]+\] (parse error at line (\d+), column (\d+): )?(.*)$)");
+    if (std::smatch m; std::regex_match(err.message, m, where)) {
+      if (m[1].matched) {
+        err.line = std::stoi(m[2]);
+        err.column = std::stoi(m[3]);
+      }
+      err.message = "invalid JSON: " + m[4].str();
+    }
+    if (!err.line) err.message += fmt::format(" (at byte {})", e.byte);
+    return std::unexpected(std::move(err));
+  }
+  try {
+    return read_report(j);
+  } catch (const BadField& b) {
+    return std::unexpected(Error{.message = (b.pointer.empty() ? std::string("/") : b.pointer) + ": " + b.message,
+                                 .file = file,
+                                 .stage = "report"});
+  }
+}
+
+Result<RunReport> read_json(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::unexpected(Error{.message = "cannot read results file", .file = path, .stage = "report"});
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) return std::unexpected(Error{.message = "read failed", .file = path, .stage = "report"});
+  return parse_json(text.str(), path);
 }
 
 }  // namespace shaderbed

@@ -1,15 +1,50 @@
 #pragma once
 #include <string>
+#include <string_view>
 
 #include "core/Error.h"
 #include "report/Results.h"
 
 namespace shaderbed {
 
-// {"schema": 1, "tool": {...versions}, "results": [{case, variant, language, backend,
-//  path, shape, status, metrics: {max_abs, rmse, psnr, bad_pixels, nonfinite, ...},
-//  time_ms: {...}}]}
+// The results file, schema version kResultsSchemaVersion (2). Every field of RunReport is
+// written, always (empty strings and zeros included), so write -> read -> write is exact:
+//
+// {"schema": 2,
+//  "tool": {"glslang", "spirv_tools", "spirv_cross", "llvm", "mesa": {"vulkan", "gl"}},
+//  "shard": "I/N" or "", "out_dir": "...", "wall_ms": 1234.5,
+//  "totals": {"cells", "pass", "fail", "known", "error"},        (derived; ignored on read)
+//  "results": [{
+//    "id": "case/variant/language/backend/path/shape",               (derived; ignored on read)
+//    "case", "variant", "language", "backend", "path", "shape",
+//    "status": "pass" | "fail" | "error", "message": "...",
+//    "attribution": {"verdict": "driver" | ... | "", "reason": "..."},
+//    "known_failure": {"known": bool, "reason": "..."},
+//    "metrics": {"max_abs", "rmse", "psnr", "bad_pixels", "nonfinite", "nonfinite_mismatch",
+//                "coverage_mismatch", "silhouette_max_abs",
+//                "min_passing": {"interior", "silhouette"},
+//                "coverage": {"interior_pixels", "silhouette_pixels", "covered_pixels",
+//                             "reference_covered_pixels", "expected_area"},
+//                "values": {"render": {"nan", "pos_inf", "neg_inf", "negative", "above_one"},
+//                           "reference": {...same...}}},
+//    "tolerance": {"interior", "silhouette", "lut": {"bound", "derivation"}},
+//    "time_ms": {"compile": ..., "build": ..., ...},
+//    "spirv_hash": {"vertex", "fragment"},
+//    "artefacts": {"render_exr", "render_png", "error_exr", "error_png", "reference_png",
+//                  "vertex_spirv", "fragment_spirv", "vertex_cross_glsl", "fragment_cross_glsl"},
+//    "image": render_exr                      (v1 alias, only when set; ignored on read)
+//  }]}
+//
+// JSON has no Inf/NaN: a non-finite number is written as the string "inf", "-inf" or "nan"
+// (psnr is +inf for identical images); the reader also takes null as NaN.
 std::string to_json(const RunReport& report);
 Result<void> write_json(const RunReport& report, const std::string& path);
+
+// Reads a results file written by write_json (any shard). Errors name the file and, for
+// syntax errors, the line and column; for a wrong field, its JSON pointer. A schema version
+// other than kResultsSchemaVersion is refused.
+Result<RunReport> read_json(const std::string& path);
+// The same from text; `file` only names the source in errors.
+Result<RunReport> parse_json(std::string_view text, const std::string& file);
 
 }  // namespace shaderbed

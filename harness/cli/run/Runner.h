@@ -22,10 +22,15 @@ struct RunOptions {
   std::vector<std::string> params;       // "name=value[,value...]" overrides
   int size = 256;
   std::string out_dir;                   // images go here; empty = no images
+  std::string shard;                     // "I/N": run only this shard of the cell groups
+  std::string expectations;              // known-failures TOML file, "" = none
   std::function<void(size_t done, size_t total, const CellResult&)> on_cell;   // progress
 };
 
 Result<RunReport> run_suite(const RunOptions& options);
+
+// Results in one canonical order (by cell id), so shards merged equal one whole run.
+void sort_results(RunReport& report);
 
 // Where the source tree's shaders/cases folder is: $SHADERBED_ROOT/shaders/cases, else the
 // source directory this binary was built from.

@@ -1,0 +1,62 @@
+#include "cli/run/CellPlan.h"
+
+#include <algorithm>
+#include <charconv>
+
+#include <fmt/format.h>
+
+#include "scene/Primitives.h"
+
+namespace shaderbed {
+namespace {
+
+bool wanted(const std::vector<std::string>& filter, const std::string& name) {
+  return filter.empty() || std::find(filter.begin(), filter.end(), name) != filter.end();
+}
+
+}  // namespace
+
+std::vector<CellGroup> plan_cells(const std::vector<Case>& cases, std::vector<BackendSlot>& backends,
+                                  const CellFilters& f) {
+  std::vector<CellGroup> groups;
+  for (const Case& c : cases)
+    for (const Variant& v : c.variants) {
+      if (!wanted(f.variants, v.name)) continue;
+      for (const std::string& shape : shape_names()) {
+        if (!wanted(f.shapes, shape)) continue;
+        CellGroup group{&c, &v, shape, {}};
+        for (const auto& [language, files] : v.shaders) {
+          if (!wanted(f.languages, to_string(language))) continue;
+          for (BackendSlot& b : backends) {
+            const std::vector<ShaderPath> paths =
+                b.backend ? (*b.backend)->paths(language) : std::vector<ShaderPath>{ShaderPath::spirv};
+            for (ShaderPath p : paths) group.cells.push_back({language, &b, p});
+          }
+        }
+        if (!group.cells.empty()) groups.push_back(std::move(group));
+      }
+    }
+  return groups;
+}
+
+Result<Shard> parse_shard(const std::string& text) {
+  Shard s;
+  const size_t slash = text.find('/');
+  auto number = [](std::string_view v, int& out) {
+    auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), out);
+    return ec == std::errc() && end == v.data() + v.size();
+  };
+  if (slash == std::string::npos || !number(std::string_view(text).substr(0, slash), s.index) ||
+      !number(std::string_view(text).substr(slash + 1), s.count) || s.count < 1 || s.index < 1 || s.index > s.count)
+    return fail("options", fmt::format("--shard '{}' is not I/N with 1 <= I <= N", text));
+  return s;
+}
+
+std::vector<CellGroup> select_shard(std::vector<CellGroup> groups, const Shard& shard) {
+  std::vector<CellGroup> mine;
+  for (size_t g = 0; g < groups.size(); ++g)
+    if (int(g % shard.count) + 1 == shard.index) mine.push_back(std::move(groups[g]));
+  return mine;
+}
+
+}  // namespace shaderbed

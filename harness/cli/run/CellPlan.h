@@ -1,0 +1,49 @@
+#pragma once
+// The cells of a run, grouped by case x variant x shape: every render of a group shows
+// the same scene, so attribution compares them with each other. Shards split whole
+// groups, deterministically, so a shard can attribute its own failures.
+#include <string>
+#include <vector>
+
+#include "backends/Backend.h"
+#include "scene/CaseFile.h"
+
+namespace shaderbed {
+
+struct BackendSlot {
+  std::string name;
+  Result<std::unique_ptr<Backend>> backend = fail("backend", "not started");
+};
+
+struct PlannedCell {
+  Language language;
+  BackendSlot* backend;
+  ShaderPath path;
+};
+
+struct CellGroup {
+  const Case* c;
+  const Variant* variant;
+  std::string shape;
+  std::vector<PlannedCell> cells;
+};
+
+struct CellFilters {
+  std::vector<std::string> variants, languages, shapes;
+};
+
+std::vector<CellGroup> plan_cells(const std::vector<Case>& cases, std::vector<BackendSlot>& backends,
+                                  const CellFilters& filters);
+
+struct Shard {
+  int index = 1;   // 1-based
+  int count = 1;
+};
+
+// "I/N" with 1 <= I <= N.
+Result<Shard> parse_shard(const std::string& text);
+
+// Group g goes to shard (g mod N) + 1: every shard gets a spread of cases and shapes.
+std::vector<CellGroup> select_shard(std::vector<CellGroup> groups, const Shard& shard);
+
+}  // namespace shaderbed

@@ -1,0 +1,80 @@
+#include "cli/run/Expectations.h"
+
+#include <toml++/toml.h>
+
+namespace shaderbed {
+namespace {
+
+std::vector<std::string> split(const std::string& s) {
+  std::vector<std::string> parts;
+  size_t start = 0;
+  while (true) {
+    const size_t slash = s.find('/', start);
+    parts.push_back(s.substr(start, slash - start));
+    if (slash == std::string::npos) return parts;
+    start = slash + 1;
+  }
+}
+
+// '*' matches any run of characters within one segment.
+bool glob(std::string_view pattern, std::string_view text) {
+  if (pattern.empty()) return text.empty();
+  if (pattern[0] == '*') return glob(pattern.substr(1), text) || (!text.empty() && glob(pattern, text.substr(1)));
+  return !text.empty() && pattern[0] == text[0] && glob(pattern.substr(1), text.substr(1));
+}
+
+}  // namespace
+
+bool matches(const std::string& pattern, const std::string& cell_id) {
+  const auto p = split(pattern), c = split(cell_id);
+  if (p.size() != c.size()) return false;
+  for (size_t i = 0; i < p.size(); ++i)
+    if (!glob(p[i], c[i])) return false;
+  return true;
+}
+
+Result<std::vector<KnownFailure>> load_expectations(const std::string& path) {
+  toml::table root;
+  try {
+    root = toml::parse_file(path);
+  } catch (const toml::parse_error& e) {
+    return std::unexpected(Error{.message = std::string(e.description()), .file = path,
+                                 .line = int(e.source().begin.line), .column = int(e.source().begin.column),
+                                 .stage = "expectations"});
+  }
+  std::vector<KnownFailure> known;
+  const toml::array* entries = root["known"].as_array();
+  if (!entries) return known;
+  for (const toml::node& node : *entries) {
+    const int line = int(node.source().begin.line);
+    const toml::table* t = node.as_table();
+    auto cells = t ? (*t)["cells"].value<std::string>() : std::nullopt;
+    auto reason = t ? (*t)["reason"].value<std::string>() : std::nullopt;
+    if (!cells || split(*cells).size() != 6)
+      return std::unexpected(Error{.message = "each [[known]] needs cells = \"case/variant/language/backend/path/shape\"",
+                                   .file = path, .line = line, .stage = "expectations"});
+    if (!reason || reason->empty())
+      return std::unexpected(
+          Error{.message = "each [[known]] needs a reason", .file = path, .line = line, .stage = "expectations"});
+    known.push_back({*cells, *reason, line});
+  }
+  return known;
+}
+
+std::vector<std::string> apply_expectations(const std::vector<KnownFailure>& known, RunReport& report) {
+  std::vector<std::string> now_passing;
+  for (CellResult& r : report.results)
+    for (const KnownFailure& k : known) {
+      if (!matches(k.pattern, r.id())) continue;
+      if (r.status == "fail") {
+        r.known_failure = true;
+        r.known_reason = k.reason;
+      } else if (r.status == "pass") {
+        now_passing.push_back(r.id());
+      }
+      break;
+    }
+  return now_passing;
+}
+
+}  // namespace shaderbed

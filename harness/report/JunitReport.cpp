@@ -1,0 +1,161 @@
+#include "report/JunitReport.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "report/Markup.h"
+
+namespace shaderbed {
+namespace {
+
+using markup::escape;
+using markup::sci;
+
+bool shared_stage(const std::string& stage) { return stage == "compile" || stage == "reference"; }
+
+double cell_seconds(const CellResult& r) {
+  double ms = 0;
+  for (const auto& [stage, t] : r.time_ms)
+    if (!shared_stage(stage) && std::isfinite(t)) ms += t;
+  return ms / 1000.0;
+}
+
+std::string seconds(double s) { return fmt::format("{:.3f}", s); }
+
+std::string attribution(const CellResult& r) {
+  std::string out = "attribution: " + (r.attribution.empty() ? std::string("none") : r.attribution);
+  if (!r.attribution_reason.empty()) out += " (" + r.attribution_reason + ")";
+  return out;
+}
+
+std::string metric_summary(const CellResult& r) {
+  const CellMetrics& m = r.metrics;
+  std::string out = fmt::format("max_abs {} (threshold {}, smallest passing {}), silhouette {} (threshold {}, smallest passing {}), rmse {}",
+                                sci(m.max_abs), sci(r.interior_threshold), sci(m.min_passing_interior),
+                                sci(m.silhouette_max_abs), sci(r.silhouette_threshold), sci(m.min_passing_silhouette),
+                                sci(m.rmse));
+  if (m.nonfinite_mismatch) out += fmt::format(", {} NaN/Inf mismatches", m.nonfinite_mismatch);
+  if (m.coverage_mismatch) out += fmt::format(", {} coverage mismatches", m.coverage_mismatch);
+  return out;
+}
+
+std::string details(const CellResult& r) {
+  const CellMetrics& m = r.metrics;
+  std::string out;
+  if (!r.message.empty()) out += r.message + "\n";
+  out += metric_summary(r) + "\n";
+  out += fmt::format("psnr {} dB, {} bad pixels, {} NaN/Inf in the render\n", sci(m.psnr), m.bad_pixels, m.nonfinite);
+  out += fmt::format("coverage: {} drawn, {} in the reference, {:.1f} expected; {} interior, {} silhouette pixels\n",
+                     m.covered_pixels, m.reference_covered_pixels, m.expected_area, m.interior_pixels, m.silhouette_pixels);
+  for (const auto& [name, v] : {std::pair{"render", &m.render_values}, std::pair{"reference", &m.reference_values}})
+    out += fmt::format("{} values: {} NaN, {} +Inf, {} -Inf, {} negative, {} above one\n", name, v->nan, v->pos_inf,
+                       v->neg_inf, v->negative, v->above_one);
+  if (!r.lut_derivation.empty()) out += fmt::format("LUT bound {} ({})\n", sci(r.lut_bound), r.lut_derivation);
+  out += attribution(r) + "\n";
+  return out;
+}
+
+std::string system_out(const CellResult& r) {
+  std::string out;
+  for (const auto& [stage, ms] : r.time_ms)
+    out += fmt::format("{} {:.3f} ms{}\n", stage, ms, shared_stage(stage) ? " (shared)" : "");
+  const CellArtefacts& a = r.artefacts;
+  for (const auto& [label, path] : {std::pair{"render", &a.render_png}, std::pair{"error", &a.error_png},
+                                    std::pair{"reference", &a.reference_png}, std::pair{"render exr", &a.render_exr},
+                                    std::pair{"error exr", &a.error_exr}})
+    if (!path->empty()) out += fmt::format("{}: {}\n", label, *path);
+  if (!r.fragment_spirv_hash.empty() || !r.vertex_spirv_hash.empty())
+    out += fmt::format("spirv hash: vertex {} fragment {}\n", r.vertex_spirv_hash, r.fragment_spirv_hash);
+  return out;
+}
+
+std::string first_line(const std::string& s) { return s.substr(0, s.find('\n')); }
+
+struct Counts {
+  size_t tests = 0, failures = 0, errors = 0, skipped = 0;
+  double seconds = 0;
+  void add(const CellResult& r) {
+    ++tests;
+    seconds += cell_seconds(r);
+    if (r.status == "error") ++errors;
+    else if (r.status == "fail" && r.known_failure) ++skipped;
+    else if (r.status != "pass") ++failures;
+  }
+  std::string attributes() const {
+    return fmt::format("tests=\"{}\" failures=\"{}\" errors=\"{}\" skipped=\"{}\"", tests, failures, errors, skipped);
+  }
+};
+
+}  // namespace
+
+std::string to_junit(const RunReport& report) {
+  // Suites in first-appearance order of their case.
+  std::vector<std::string> order;
+  std::map<std::string, std::vector<const CellResult*>> suites;
+  Counts total;
+  for (const CellResult& r : report.results) {
+    if (!suites.contains(r.case_name)) order.push_back(r.case_name);
+    suites[r.case_name].push_back(&r);
+    total.add(r);
+  }
+  const ToolVersions& t = report.tools;
+  const std::pair<const char*, const std::string*> properties[] = {
+      {"glslang", &t.glslang},         {"spirv_tools", &t.spirv_tools},     {"spirv_cross", &t.spirv_cross},
+      {"llvm", &t.llvm},               {"mesa_vulkan", &t.vulkan_driver},   {"mesa_gl", &t.gl_driver},
+      {"shard", &report.shard},        {"out_dir", &report.out_dir}};
+
+  std::string x = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  x += fmt::format("<testsuites name=\"shaderbed\" {} time=\"{}\">\n", total.attributes(), seconds(report.wall_ms / 1000.0));
+  for (const std::string& name : order) {
+    Counts counts;
+    for (const CellResult* r : suites[name]) counts.add(*r);
+    x += fmt::format("  <testsuite name=\"{}\" {} time=\"{}\">\n", escape(name, true), counts.attributes(),
+                     seconds(counts.seconds));
+    x += "    <properties>\n";
+    for (const auto& [key, value] : properties)
+      x += fmt::format("      <property name=\"{}\" value=\"{}\"/>\n", key, escape(*value, true));
+    x += "    </properties>\n";
+    for (const CellResult* rp : suites[name]) {
+      const CellResult& r = *rp;
+      x += fmt::format("    <testcase classname=\"{}\" name=\"{}\" time=\"{}\">\n",
+                       escape(r.case_name + "." + r.variant + "." + r.language, true),
+                       escape(r.backend + "/" + r.path + "/" + r.shape, true), seconds(cell_seconds(r)));
+      if (r.status == "error") {
+        x += fmt::format("      <error type=\"error\" message=\"{}\">{}</error>\n", escape(first_line(r.message), true),
+                         escape(r.message));
+      } else if (r.status == "fail" && r.known_failure) {
+        x += fmt::format("      <skipped message=\"{}\">{}</skipped>\n", escape("known: " + r.known_reason, true),
+                         escape(details(r)));
+      } else if (r.status != "pass") {
+        std::string message = r.message.empty() ? "" : first_line(r.message) + "; ";
+        message += metric_summary(r) + "; " + attribution(r);
+        x += fmt::format("      <failure type=\"{}\" message=\"{}\">{}</failure>\n",
+                         escape(r.attribution.empty() ? "fail" : r.attribution, true), escape(message, true),
+                         escape(details(r)));
+      }
+      x += fmt::format("      <system-out>{}</system-out>\n", escape(system_out(r)));
+      x += "    </testcase>\n";
+    }
+    x += "  </testsuite>\n";
+  }
+  x += "</testsuites>\n";
+  return x;
+}
+
+Result<void> write_junit(const RunReport& report, const std::string& path) {
+  std::error_code ec;
+  if (const auto parent = std::filesystem::path(path).parent_path(); !parent.empty())
+    std::filesystem::create_directories(parent, ec);
+  std::ofstream out(path, std::ios::binary);
+  if (!out) return std::unexpected(Error{.message = "cannot write JUnit report", .file = path, .stage = "report"});
+  out << to_junit(report);
+  if (!out) return std::unexpected(Error{.message = "write failed", .file = path, .stage = "report"});
+  return {};
+}
+
+}  // namespace shaderbed

@@ -1,0 +1,97 @@
+// CI-matrix plumbing: shards that add up to the whole run, and known-failure baselines.
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "cli/run/CellPlan.h"
+#include "cli/run/Expectations.h"
+#include "cli/run/Runner.h"
+
+namespace shaderbed {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(Shard, ParsesAndRejects) {
+  auto s = parse_shard("2/5");
+  ASSERT_TRUE(s);
+  EXPECT_EQ(s->index, 2);
+  EXPECT_EQ(s->count, 5);
+  for (const char* bad : {"0/3", "4/3", "1/0", "x/2", "1-2", "1/", "/2"}) EXPECT_FALSE(parse_shard(bad)) << bad;
+}
+
+TEST(Shard, TwoShardsMergedEqualTheWholeRun) {
+  RunOptions whole;
+  whole.cases = {"lambert", "ambient"};
+  whole.shapes = {"sphere", "torus"};
+  whole.size = 48;
+  auto all = run_suite(whole);
+  ASSERT_TRUE(all) << all.error().to_string();
+  RunReport merged;
+  for (const char* s : {"1/2", "2/2"}) {
+    RunOptions part = whole;
+    part.shard = s;
+    auto shard = run_suite(part);
+    ASSERT_TRUE(shard) << shard.error().to_string();
+    EXPECT_LT(shard->results.size(), all->results.size()) << s;
+    merged.results.insert(merged.results.end(), shard->results.begin(), shard->results.end());
+  }
+  sort_results(merged);
+  ASSERT_EQ(merged.results.size(), all->results.size());
+  for (size_t i = 0; i < merged.results.size(); ++i) {
+    const CellResult &a = all->results[i], &b = merged.results[i];
+    EXPECT_EQ(a.id(), b.id());
+    EXPECT_EQ(a.status, b.status) << a.id();
+    // The drivers are deterministic: the same cell renders the same pixels in any shard.
+    EXPECT_EQ(a.metrics.max_abs, b.metrics.max_abs) << a.id();
+    EXPECT_EQ(a.metrics.rmse, b.metrics.rmse) << a.id();
+  }
+}
+
+TEST(Expectations, PatternsMatchWholeSegments) {
+  EXPECT_TRUE(matches("warn/pixel/*/gl/*/torus", "warn/pixel/hlsl/gl/cross/torus"));
+  EXPECT_FALSE(matches("warn/pixel/*/gl/*/torus", "warn/pixel/hlsl/vulkan/spirv/torus"));
+  EXPECT_TRUE(matches("*/*/*/*/*/*", "a/b/c/d/e/f"));
+  EXPECT_TRUE(matches("ward_*/pixel*/glsl/*/*/*", "ward_iso/pixel_lut/glsl/gl/glsl/cone"));
+  EXPECT_FALSE(matches("warn/pixel/*/gl/*", "warn/pixel/hlsl/gl/cross/torus")) << "six segments";
+}
+
+TEST(Expectations, KnownFailureIsReportedAsKnownAndNewOneFails) {
+  const fs::path file = fs::temp_directory_path() / ("shaderbed_known_" + std::to_string(::getpid()) + ".toml");
+  std::ofstream(file) << "[[known]]\ncells = \"phong/pixel/*/*/*/cube\"\nreason = \"planted in this test\"\n";
+  auto known = load_expectations(file.string());
+  ASSERT_TRUE(known) << known.error().to_string();
+  RunReport report;
+  CellResult known_fail{.case_name = "phong", .variant = "pixel", .language = "glsl", .backend = "gl", .path = "glsl",
+                        .shape = "cube", .status = "fail"};
+  CellResult new_fail = known_fail;
+  new_fail.shape = "torus";
+  CellResult now_passes = known_fail;
+  now_passes.language = "hlsl";
+  now_passes.status = "pass";
+  report.results = {known_fail, new_fail, now_passes};
+  const auto passing = apply_expectations(*known, report);
+  EXPECT_TRUE(report.results[0].known_failure);
+  EXPECT_EQ(report.results[0].known_reason, "planted in this test");
+  EXPECT_FALSE(report.results[1].known_failure);
+  EXPECT_FALSE(report.acceptable()) << "the torus failure is new";
+  ASSERT_EQ(passing.size(), 1u);
+  EXPECT_EQ(passing[0], now_passes.id());
+  report.results.erase(report.results.begin() + 1);
+  EXPECT_TRUE(report.acceptable());
+  fs::remove(file);
+}
+
+TEST(Expectations, EntryWithoutReasonIsRefusedWithItsLine) {
+  const fs::path file = fs::temp_directory_path() / ("shaderbed_known_bad_" + std::to_string(::getpid()) + ".toml");
+  std::ofstream(file) << "# baseline\n[[known]]\ncells = \"a/b/c/d/e/f\"\n";
+  auto known = load_expectations(file.string());
+  ASSERT_FALSE(known);
+  EXPECT_EQ(known.error().line, 2);
+  EXPECT_NE(known.error().message.find("reason"), std::string::npos);
+  fs::remove(file);
+}
+
+}  // namespace
+}  // namespace shaderbed
