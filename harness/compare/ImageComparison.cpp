@@ -2,124 +2,375 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include <fmt/format.h>
 
+// DESIGN: the coverage-count rule (blank and degenerate images).
+// Counting drawn pixels catches what per-pixel masks cannot: a render that draws
+// nothing (blank) or the wrong size, and, with the expected area from the mesh, a
+// reference that is itself wrong in the same way as the renders (both wrong or both
+// blank then no longer agree "by accident"). The allowance is tied to the outline
+// length, because that is where legitimate differences live: rasterisers that sample
+// pixel centres differ from each other, and from the exact area, only in pixels the
+// outline crosses. The reference's silhouette band (pixels with covered and uncovered
+// pixels in their 3x3 neighbourhood) is two pixels wide along the outline, so
+// band / 4 = half a pixel of growth or shrinkage all along it. Measured on the scene's
+// shapes at 64..512 px (lavapipe, llvmpipe, the reference, projected_area_pixels): the
+// counts differ by at most a few pixels, less than 1/10 of the allowance; a 1 % scale
+// change of the geometry (about 2 % of the area) exceeds it on every shape at 256 px.
+// A shift keeps the count: it is caught by the per-pixel coverage and the interior
+// colours instead.
+
 namespace shaderbed {
 namespace {
 
-double channel_error(const float* r, const double* ref) {
-  double e = 0;
-  for (int c = 0; c < 3; ++c) {
-    const double d = std::abs(double(r[c]) - ref[c]);
-    e = std::isnan(d) ? std::numeric_limits<double>::infinity() : std::max(e, d);
-  }
-  return e;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// 0 finite, 1 NaN, 2 +Inf, 3 -Inf.
+inline int value_class(double v) {
+  if (std::isfinite(v)) return 0;
+  if (std::isnan(v)) return 1;
+  return v > 0 ? 2 : 3;
 }
 
-bool finite_pixel(const float* p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
+struct PixelError {
+  double error;        // largest per-channel |r - q|; 0 for equal non-finite values, inf for unequal
+  bool nonfinite_mismatch;
+};
+
+inline PixelError pixel_error(const float* r, const double* q) {
+  double e = 0;
+  bool mismatch = false;
+  for (int c = 0; c < 3; ++c) {
+    const double a = r[c], b = q[c];
+    const double d = std::abs(a - b);
+    if (std::isfinite(d)) {
+      e = std::max(e, d);
+    } else if (!(std::isfinite(a) && std::isfinite(b)) && value_class(a) != value_class(b)) {
+      e = kInf;
+      mismatch = true;
+    }
+    // Otherwise both are the same non-finite value: agreement.
+  }
+  return {e, mismatch};
+}
+
+inline bool finite_rgb(const float* p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
+inline bool finite_rgb(const double* p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
+
+template <typename T>
+void add_values(ValueCounts& v, const T* p) {
+  bool nan = false, pos_inf = false, neg_inf = false, negative = false, above_one = false;
+  for (int c = 0; c < 3; ++c) {
+    const double x = p[c];
+    if (std::isnan(x)) nan = true;
+    else if (std::isinf(x)) (x > 0 ? pos_inf : neg_inf) = true;
+    else if (x < 0) negative = true;
+    else if (x > 1) above_one = true;
+  }
+  v.nan += nan;
+  v.pos_inf += pos_inf;
+  v.neg_inf += neg_inf;
+  v.negative += negative;
+  v.above_one += above_one;
+}
+
+template <typename T>
+void add_values_fast(ValueCounts& v, const T* p) {
+  // Common case first: three finite values in [0, 1].
+  if (p[0] >= 0 && p[0] <= 1 && p[1] >= 0 && p[1] <= 1 && p[2] >= 0 && p[2] <= 1) return;
+  add_values(v, p);
+}
+
+template <typename T>
+void mask_colour(const T* p, float* o) {
+  bool nan = false, pos_inf = false, neg_inf = false, negative = false, above_one = false;
+  for (int c = 0; c < 3; ++c) {
+    const double x = p[c];
+    if (std::isnan(x)) nan = true;
+    else if (std::isinf(x)) (x > 0 ? pos_inf : neg_inf) = true;
+    else if (x < 0) negative = true;
+    else if (x > 1) above_one = true;
+  }
+  auto set = [o](float r, float g, float b) { o[0] = r, o[1] = g, o[2] = b, o[3] = 1; };
+  if (nan) set(1, 0, 1);
+  else if (pos_inf) set(1, 0, 0);
+  else if (neg_inf) set(0, 0, 1);
+  else if (negative) set(0, 1, 1);
+  else if (above_one) set(1, 1, 0);
+  else {
+    const float luminance = float(std::clamp(0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2], 0.0, 1.0));
+    const float g = 0.12f + 0.18f * luminance;
+    set(g, g, g);
+  }
+}
+
+std::string px(double v) { return fmt::format("{:.0f}", v); }
 
 }  // namespace
 
+size_t coverage_allowance(size_t silhouette_band_pixels) { return std::max<size_t>(4, silhouette_band_pixels / 4); }
+
 std::vector<PixelClass> classify_pixels(const ReferenceImage& ref) {
-  std::vector<PixelClass> classes(size_t(ref.width) * ref.height, PixelClass::background);
-  for (int y = 0; y < ref.height; ++y)
-    for (int x = 0; x < ref.width; ++x) {
-      int covered = 0, seen = 0;
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const int nx = x + dx, ny = y + dy;
-          if (nx < 0 || ny < 0 || nx >= ref.width || ny >= ref.height) continue;
-          ++seen;
-          covered += ref.coverage[size_t(ny) * ref.width + nx] ? 1 : 0;
-        }
-      const size_t i = size_t(y) * ref.width + x;
-      classes[i] = covered == 0 ? PixelClass::background
-                   : covered == seen && ref.coverage[i] ? PixelClass::interior
-                                                        : PixelClass::silhouette;
+  // Separable 3x3 sums of covered and of uncovered in-image neighbours (pixels outside
+  // the image count as neither): interior = no uncovered neighbour and covered itself,
+  // background = no covered neighbour.
+  const int w = ref.width, h = ref.height;
+  const size_t n = size_t(w) * h;
+  std::vector<uint8_t> covered_row(n), uncovered_row(n);
+  for (int y = 0; y < h; ++y) {
+    const uint8_t* c = &ref.coverage[size_t(y) * w];
+    for (int x = 0; x < w; ++x) {
+      int cov = 0, unc = 0;
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int nx = x + dx;
+        if (nx < 0 || nx >= w) continue;
+        (c[nx] ? cov : unc) += 1;
+      }
+      covered_row[size_t(y) * w + x] = uint8_t(cov);
+      uncovered_row[size_t(y) * w + x] = uint8_t(unc);
+    }
+  }
+  std::vector<PixelClass> classes(n, PixelClass::background);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      int cov = 0, unc = 0;
+      for (int dy = -1; dy <= 1; ++dy) {
+        const int ny = y + dy;
+        if (ny < 0 || ny >= h) continue;
+        cov += covered_row[size_t(ny) * w + x];
+        unc += uncovered_row[size_t(ny) * w + x];
+      }
+      const size_t i = size_t(y) * w + x;
+      classes[i] = cov == 0                       ? PixelClass::background
+                   : unc == 0 && ref.coverage[i] ? PixelClass::interior
+                                                 : PixelClass::silhouette;
     }
   return classes;
 }
 
-Comparison compare_images(const Image& render, const ReferenceImage& ref, const ComparisonThresholds& t) {
+Comparison compare_images(const Image& render, const ReferenceImage& ref, const ComparisonThresholds& t,
+                          double expected_area) {
   Comparison out;
+  out.expected_area = expected_area > 0 ? expected_area : 0;
+  out.min_passing_interior = out.min_passing_silhouette = kInf;
   if (render.width != ref.width || render.height != ref.height) {
     out.reason = fmt::format("render is {}x{}, reference {}x{}", render.width, render.height, ref.width, ref.height);
     return out;
   }
+  const int w = ref.width, h = ref.height;
   const std::vector<PixelClass> classes = classify_pixels(ref);
-  out.error = Image(render.width, render.height);
+  out.error = Image(w, h);
   double interior_sq = 0, band_sq = 0;
+  size_t interior_finite = 0, band_finite = 0;
+  // Drawn pixels whose finite colour error is over the threshold, and the largest such error.
+  size_t interior_over = 0, band_over = 0;
+  double interior_finite_max = 0, band_finite_max = 0;
+  // Uniform-render detection and the reference's interior range (for the "blank output" note).
+  const float* first_drawn = nullptr;
+  bool uniform = true;
+  double ref_lo[3] = {kInf, kInf, kInf}, ref_hi[3] = {-kInf, -kInf, -kInf};
 
-  for (int y = 0; y < ref.height; ++y)
-    for (int x = 0; x < ref.width; ++x) {
-      const size_t i = size_t(y) * ref.width + x;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const size_t i = size_t(y) * w + x;
       const float* r = render.pixel(x, y);
       const double* q = &ref.rgba[i * 4];
       const bool drawn = render.coverage[i] != 0;
-      out.error.coverage[i] = static_cast<uint8_t>(classes[i]);
-      if (drawn && !finite_pixel(r)) ++out.nonfinite;
+      const PixelClass cls = classes[i];
+      if (drawn) {
+        ++out.covered_pixels;
+        if (!finite_rgb(r)) ++out.nonfinite;
+        add_values_fast(out.render_values, r);
+        if (!first_drawn) first_drawn = r;
+        else if (uniform && std::memcmp(first_drawn, r, 3 * sizeof(float)) != 0) uniform = false;
+      }
+      if (ref.coverage[i]) {
+        ++out.reference_covered_pixels;
+        add_values_fast(out.reference_values, q);
+      }
+      out.error.coverage[i] = static_cast<uint8_t>(cls);
       float* e = out.error.pixel(x, y);
-      for (int c = 0; c < 3; ++c) e[c] = float(std::abs(double(r[c]) - q[c]));
+      for (int c = 0; c < 3; ++c) {
+        const double a = r[c], b = q[c];
+        const double d = std::abs(a - b);
+        e[c] = std::isfinite(d) ? float(d) : value_class(a) == value_class(b) ? 0.0f : float(kInf);
+      }
       e[3] = 1;
 
-      switch (classes[i]) {
+      switch (cls) {
         case PixelClass::background:
           if (drawn) ++out.coverage_mismatch;
           break;
         case PixelClass::interior: {
           ++out.interior.pixels;
+          for (int c = 0; c < 3; ++c)
+            if (std::isfinite(q[c])) ref_lo[c] = std::min(ref_lo[c], q[c]), ref_hi[c] = std::max(ref_hi[c], q[c]);
           if (!drawn) {
             ++out.coverage_mismatch;
             ++out.interior.bad_pixels;
             break;
           }
-          const double err = channel_error(r, q);
-          out.interior.max_abs = std::max(out.interior.max_abs, err);
-          interior_sq += err * err;
-          if (!(err <= t.interior_max_abs)) ++out.interior.bad_pixels;
+          const PixelError pe = pixel_error(r, q);
+          if (pe.nonfinite_mismatch) ++out.nonfinite_mismatch;
+          out.interior.max_abs = std::max(out.interior.max_abs, pe.error);
+          if (std::isfinite(pe.error)) {
+            interior_sq += pe.error * pe.error;
+            ++interior_finite;
+            interior_finite_max = std::max(interior_finite_max, pe.error);
+            if (pe.error > t.interior_max_abs) ++interior_over;
+          }
+          if (!(pe.error <= t.interior_max_abs)) ++out.interior.bad_pixels;
           break;
         }
         case PixelClass::silhouette: {
           ++out.silhouette.pixels;
           // Best match over the 3x3 neighbourhood: same coverage, and if drawn, the
           // closest colour. A one-pixel edge shift is not an error; a wrong colour is.
-          double best = std::numeric_limits<double>::infinity();
+          double best = kInf;
+          bool any_drawn_neighbour = false, reference_matched = false;
+          const bool check_reverse = ref.coverage[i] && !finite_rgb(q);
           for (int dy = -1; dy <= 1; ++dy)
             for (int dx = -1; dx <= 1; ++dx) {
               const int nx = x + dx, ny = y + dy;
-              if (nx < 0 || ny < 0 || nx >= ref.width || ny >= ref.height) continue;
-              const size_t j = size_t(ny) * ref.width + nx;
+              if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
+              const size_t j = size_t(ny) * w + nx;
+              if (check_reverse && render.coverage[j]) {
+                // The reference's non-finite value must show up in a render pixel nearby.
+                any_drawn_neighbour = true;
+                reference_matched = reference_matched || !pixel_error(&render.rgba[j * 4], q).nonfinite_mismatch;
+              }
               if ((ref.coverage[j] != 0) != drawn) continue;
-              best = std::min(best, drawn ? channel_error(r, &ref.rgba[j * 4]) : 0.0);
+              best = std::min(best, drawn ? pixel_error(r, &ref.rgba[j * 4]).error : 0.0);
             }
+          // Drawn and no covered neighbour agrees on finiteness (errors are finite
+          // between finite values): a non-finite mismatch, as is a reference NaN/Inf
+          // that no drawn render pixel nearby reproduces.
+          const bool forward = drawn && !std::isfinite(best);
+          const bool reverse = check_reverse && any_drawn_neighbour && !reference_matched;
+          if (forward || reverse) ++out.nonfinite_mismatch;
           if (std::isfinite(best)) {
-            out.silhouette.max_abs = std::max(out.silhouette.max_abs, best);
             band_sq += best * best;
-          } else {
-            out.silhouette.max_abs = std::numeric_limits<double>::infinity();
+            ++band_finite;
+            band_finite_max = std::max(band_finite_max, best);
+            if (best > t.silhouette_max_abs) ++band_over;
           }
-          if (!(best <= t.silhouette_max_abs)) ++out.silhouette.bad_pixels;
+          out.silhouette.max_abs = std::max(out.silhouette.max_abs, reverse ? kInf : best);
+          if (!(best <= t.silhouette_max_abs) || reverse) ++out.silhouette.bad_pixels;
           break;
         }
       }
     }
-  if (out.interior.pixels) out.interior.rmse = std::sqrt(interior_sq / out.interior.pixels);
-  if (out.silhouette.pixels) out.silhouette.rmse = std::sqrt(band_sq / out.silhouette.pixels);
-  out.psnr = out.interior.rmse > 0 ? 20.0 * std::log10(1.0 / out.interior.rmse) : std::numeric_limits<double>::infinity();
+  if (interior_finite) out.interior.rmse = std::sqrt(interior_sq / interior_finite);
+  if (band_finite) out.silhouette.rmse = std::sqrt(band_sq / band_finite);
+  out.psnr = out.interior.rmse > 0 ? 20.0 * std::log10(1.0 / out.interior.rmse) : kInf;
+  out.uniform = out.covered_pixels > 1 && uniform;
 
-  if (out.interior.pixels == 0) out.reason = "reference covers no interior pixels (nothing to compare)";
-  else if (out.nonfinite) out.reason = fmt::format("{} NaN/Inf pixels", out.nonfinite);
-  else if (out.coverage_mismatch) out.reason = fmt::format("coverage differs at {} pixels", out.coverage_mismatch);
-  else if (out.interior.bad_pixels)
-    out.reason = fmt::format("{} interior pixels over {:.3g} (max {:.3g})", out.interior.bad_pixels, t.interior_max_abs,
-                             out.interior.max_abs);
-  else if (out.silhouette.bad_pixels)
-    out.reason = fmt::format("{} silhouette pixels over {:.3g} (max {:.3g})", out.silhouette.bad_pixels,
-                             t.silhouette_max_abs, out.silhouette.max_abs);
+  // Coverage counts: the render against the reference and the mesh's projected area,
+  // and the reference against the projected area.
+  const size_t allow = coverage_allowance(out.silhouette.pixels);
+  out.allowed_coverage_difference = allow;
+  auto off = [allow](double a, double b) { return std::abs(a - b) > double(allow); };
+  const double covered = double(out.covered_pixels), ref_covered = double(out.reference_covered_pixels);
+  out.blank = out.covered_pixels == 0 && out.reference_covered_pixels > 0;
+  const bool render_off = off(covered, ref_covered) || (out.expected_area > 0 && off(covered, out.expected_area));
+  const bool reference_off = out.expected_area > 0 && off(ref_covered, out.expected_area);
+  out.degenerate = render_off || reference_off;
+
+  std::vector<std::string> reasons;
+  const std::string expected = out.expected_area > 0 ? fmt::format(", expected ≈{} px", px(out.expected_area)) : "";
+  if (out.interior.pixels == 0) reasons.push_back("reference covers no interior pixels (nothing to compare)");
+  if (out.blank)
+    reasons.push_back(fmt::format("blank image: coverage 0 px, reference {} px{}", out.reference_covered_pixels, expected));
+  else if (render_off)
+    reasons.push_back(fmt::format("coverage {} px, reference {} px{} (allowed ±{})", out.covered_pixels,
+                                  out.reference_covered_pixels, expected, allow));
+  if (reference_off && !render_off)
+    reasons.push_back(fmt::format("reference coverage {} px, expected ≈{} px (allowed ±{}): the reference is off",
+                                  out.reference_covered_pixels, px(out.expected_area), allow));
+  else if (reference_off)
+    reasons.push_back("the reference's coverage is off the expected area too");
+  if (out.nonfinite_mismatch)
+    reasons.push_back(fmt::format("{} pixels NaN/Inf where the reference is finite or the reverse (fails at any tolerance)",
+                                  out.nonfinite_mismatch));
+  if (!out.blank) {
+    if (out.coverage_mismatch) reasons.push_back(fmt::format("coverage differs at {} pixels", out.coverage_mismatch));
+    if (interior_over)
+      reasons.push_back(fmt::format("{} interior pixels over {:.3g} (max {:.3g})", interior_over, t.interior_max_abs,
+                                    interior_finite_max));
+    if (band_over)
+      reasons.push_back(fmt::format("{} silhouette pixels over {:.3g} (max {:.3g})", band_over, t.silhouette_max_abs,
+                                    band_finite_max));
+  }
+  if (!reasons.empty() && out.uniform) {
+    bool reference_varies = false;
+    for (int c = 0; c < 3; ++c) reference_varies = reference_varies || ref_hi[c] - ref_lo[c] > t.interior_max_abs;
+    if (reference_varies)
+      reasons.push_back(fmt::format("blank output: every drawn pixel is ({:.3g}, {:.3g}, {:.3g})", first_drawn[0],
+                                    first_drawn[1], first_drawn[2]));
+  }
+  for (const std::string& s : reasons) out.reason += (out.reason.empty() ? "" : "; ") + s;
   out.pass = out.reason.empty();
+
+  const bool threshold_independent = out.interior.pixels == 0 || out.blank || out.degenerate ||
+                                     out.nonfinite_mismatch || out.coverage_mismatch;
+  if (!threshold_independent) {
+    out.min_passing_interior = out.interior.max_abs;
+    out.min_passing_silhouette = out.silhouette.max_abs;
+  }
   return out;
+}
+
+CellMetrics cell_metrics(const Comparison& c) {
+  CellMetrics m;
+  m.max_abs = c.interior.max_abs;
+  m.rmse = c.interior.rmse;
+  m.psnr = c.psnr;
+  m.bad_pixels = c.interior.bad_pixels + c.silhouette.bad_pixels;
+  m.nonfinite = c.nonfinite;
+  m.nonfinite_mismatch = c.nonfinite_mismatch;
+  m.coverage_mismatch = c.coverage_mismatch;
+  m.silhouette_max_abs = c.silhouette.max_abs;
+  m.interior_pixels = c.interior.pixels;
+  m.silhouette_pixels = c.silhouette.pixels;
+  m.covered_pixels = c.covered_pixels;
+  m.reference_covered_pixels = c.reference_covered_pixels;
+  m.expected_area = c.expected_area;
+  m.min_passing_interior = c.min_passing_interior;
+  m.min_passing_silhouette = c.min_passing_silhouette;
+  m.render_values = c.render_values;
+  m.reference_values = c.reference_values;
+  return m;
+}
+
+ValueCounts count_values(const Image& image) {
+  ValueCounts v;
+  for (size_t i = 0; i < image.coverage.size(); ++i)
+    if (image.coverage[i]) add_values_fast(v, &image.rgba[i * 4]);
+  return v;
+}
+
+ValueCounts count_values(const ReferenceImage& image) {
+  ValueCounts v;
+  for (size_t i = 0; i < image.coverage.size(); ++i)
+    if (image.coverage[i]) add_values_fast(v, &image.rgba[i * 4]);
+  return v;
+}
+
+Image value_mask(const Image& image) {
+  Image mask(image.width, image.height);
+  mask.coverage = image.coverage;
+  for (size_t i = 0; i < mask.coverage.size(); ++i) mask_colour(&image.rgba[i * 4], &mask.rgba[i * 4]);
+  return mask;
+}
+
+Image value_mask(const ReferenceImage& image) {
+  Image mask(image.width, image.height);
+  mask.coverage = image.coverage;
+  for (size_t i = 0; i < mask.coverage.size(); ++i) mask_colour(&image.rgba[i * 4], &mask.rgba[i * 4]);
+  return mask;
 }
 
 }  // namespace shaderbed

@@ -7,40 +7,92 @@
 
 #include <fmt/format.h>
 
+#include "report/Markup.h"
+
 namespace shaderbed {
+namespace {
+
+constexpr size_t kColumns = 10;
+
+std::string verdict(const CellResult& r) {
+  if (r.status == "pass") return "pass";
+  if (r.status == "fail") return r.known_failure ? "known" : "FAIL";
+  return "ERROR";
+}
+
+std::string where(const CellResult& r) {
+  return fmt::format("{} {} {} {}/{} {}", r.case_name, r.variant, r.language, r.backend, r.path, r.shape);
+}
+
+std::string first_line(const std::string& s) { return s.substr(0, s.find('\n')); }
+
+void print_images(const CellResult& r, std::FILE* out) {
+  const CellArtefacts& a = r.artefacts;
+  const std::string& render = a.render_png.empty() ? a.render_exr : a.render_png;
+  const std::string& error = a.error_png.empty() ? a.error_exr : a.error_png;
+  if (!render.empty()) fmt::print(out, "      render: {}\n", render);
+  if (!error.empty()) fmt::print(out, "      error:  {}\n", error);
+  if (!a.reference_png.empty()) fmt::print(out, "      ref:    {}\n", a.reference_png);
+}
+
+}  // namespace
 
 void print_table(const RunReport& report, std::FILE* out) {
-  static const char* const headers[] = {"case", "variant", "lang", "backend", "path", "shape", "max err", "rmse", "verdict"};
-  std::vector<std::array<std::string, 9>> rows;
+  using markup::sci;
+  static const char* const headers[kColumns] = {"case",    "variant", "lang",     "backend", "path",
+                                                "shape",   "max err", "min pass", "rmse",    "verdict"};
+  std::vector<std::array<std::string, kColumns>> rows;
   for (const CellResult& r : report.results) {
     const bool measured = r.status != "error";
     rows.push_back({r.case_name, r.variant, r.language, r.backend, r.path, r.shape,
-                    measured ? fmt::format("{:.2e}", r.metrics.max_abs) : "-",
-                    measured ? fmt::format("{:.2e}", r.metrics.rmse) : "-", r.status == "pass" ? "pass" : r.status == "fail" ? "FAIL" : "ERROR"});
+                    measured ? sci(r.metrics.max_abs) : "-", measured ? sci(r.metrics.min_passing_interior) : "-",
+                    measured ? sci(r.metrics.rmse) : "-", verdict(r)});
   }
-  std::array<size_t, 9> width{};
-  for (size_t c = 0; c < 9; ++c) width[c] = std::string_view(headers[c]).size();
+  std::array<size_t, kColumns> width{};
+  for (size_t c = 0; c < kColumns; ++c) width[c] = std::string_view(headers[c]).size();
   for (const auto& row : rows)
-    for (size_t c = 0; c < 9; ++c) width[c] = std::max(width[c], row[c].size());
+    for (size_t c = 0; c < kColumns; ++c) width[c] = std::max(width[c], row[c].size());
   auto print_row = [&](auto&& cell) {
     std::string line;
-    for (size_t c = 0; c < 9; ++c) line += fmt::format("{:<{}}  ", cell(c), width[c]);
+    for (size_t c = 0; c < kColumns; ++c) line += fmt::format("{:<{}}  ", cell(c), width[c]);
     while (!line.empty() && line.back() == ' ') line.pop_back();
     fmt::print(out, "{}\n", line);
   };
   print_row([&](size_t c) { return std::string(headers[c]); });
   for (const auto& row : rows) print_row([&](size_t c) { return row[c]; });
 
-  bool header = false;
-  for (const CellResult& r : report.results) {
-    if (r.status == "pass") continue;
-    if (!header) fmt::print(out, "\nfailures:\n");
-    header = true;
-    fmt::print(out, "  {} {} {} {}/{} {}: {}{}\n", r.case_name, r.variant, r.language, r.backend, r.path, r.shape, r.message,
-               r.artefacts.render_exr.empty() ? "" : " (" + r.artefacts.render_exr + ")");
-  }
-  fmt::print(out, "\n{} cells: {} passed, {} failed, {} errors in {:.1f} s\n", report.results.size(), report.count("pass"),
-             report.count("fail"), report.count("error"), report.wall_ms / 1000.0);
+  auto section = [&](const char* title, auto&& wanted, auto&& body) {
+    bool header = false;
+    for (const CellResult& r : report.results) {
+      if (!wanted(r)) continue;
+      if (!header) fmt::print(out, "\n{}:\n", title);
+      header = true;
+      body(r);
+    }
+  };
+  section("failures", [](const CellResult& r) { return r.status == "fail" && !r.known_failure; },
+          [&](const CellResult& r) {
+            fmt::print(out, "  {}: {}\n", where(r), r.message.empty() ? "failed" : first_line(r.message));
+            fmt::print(out, "      attribution: {}{}\n", r.attribution.empty() ? "none" : r.attribution,
+                       r.attribution_reason.empty() ? "" : " - " + r.attribution_reason);
+            print_images(r, out);
+          });
+  section("errors", [](const CellResult& r) { return r.status != "pass" && r.status != "fail"; },
+          [&](const CellResult& r) { fmt::print(out, "  {}: {}\n", where(r), r.message); });
+  section("known", [](const CellResult& r) { return r.status == "fail" && r.known_failure; },
+          [&](const CellResult& r) {
+            fmt::print(out, "  {}: {}\n", where(r), r.message.empty() ? "failed" : first_line(r.message));
+            fmt::print(out, "      known: {}\n", r.known_reason.empty() ? "(no reason given)" : r.known_reason);
+            if (!r.attribution.empty()) fmt::print(out, "      attribution: {}\n", r.attribution);
+          });
+  section("known failures that passed (remove them from the expectations)",
+          [](const CellResult& r) { return r.status == "pass" && r.known_failure; },
+          [&](const CellResult& r) { fmt::print(out, "  {}: {}\n", where(r), r.known_reason); });
+
+  size_t known = 0;
+  for (const CellResult& r : report.results) known += r.status == "fail" && r.known_failure;
+  fmt::print(out, "\n{} cells: {} passed, {} failed, {} known, {} errors in {:.1f} s\n", report.results.size(),
+             report.count("pass"), report.count("fail") - known, known, report.count("error"), report.wall_ms / 1000.0);
 }
 
 }  // namespace shaderbed

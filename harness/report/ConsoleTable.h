@@ -5,7 +5,10 @@
 
 namespace shaderbed {
 
-// The aligned result table, then a line per failure or error, then the totals.
+// The aligned result table (verdict "pass", "FAIL", "known" or "ERROR"; "min pass" is the
+// smallest interior threshold that would have passed), then each new failure with its
+// attribution and image paths, the errors, the known failures with their reasons, the
+// known failures that passed, and the totals.
 void print_table(const RunReport& report, std::FILE* out);
 
 }  // namespace shaderbed

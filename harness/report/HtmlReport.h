@@ -19,11 +19,14 @@ namespace shaderbed {
 // metrics, value counts, tolerances and LUT derivation, timings, SPIR-V hashes and links).
 //
 // Images: each PNG is stored once (the reference is shared) and only set on an <img> when
-// its card is shown. What is embedded is bounded by HtmlOptions::image_budget, in this
-// order: the images of failing and erroring cells, one passing example per case/variant,
-// then the other renders of failing cells' case/variant/shape. Images beyond the budget
-// are referenced by a relative path to the file (shown when the page is opened where the
-// run's images are); a missing file is shown as "missing" with its path.
+// its card is shown. What is embedded is bounded by HtmlOptions (image_budget, and what
+// max_page_bytes leaves after the markup), in this order: the images of failing and
+// erroring cells, one passing example per case/variant, the other renders of failing
+// cells' case/variant/shape, then the rest (references, renders, error maps) while the
+// budget lasts. A full suite at the default 256 px (1120 cells, 2352 PNGs of ~5 KB) embeds
+// everything: index.html is 14.4 MB all passing, 22 MB all failing. Images over the
+// budget are referenced by their path relative to DIR (shown when the page is opened next
+// to the run's images); a missing file is shown as "missing" with its path.
 //
 // URL fragment options (combine with &): #expand-all opens every row; #sort=KEY or
 // #sort=KEY:desc sorts (KEY: index, case, variant, language, backend, path, shape, status,
@@ -32,7 +35,8 @@ namespace shaderbed {
 // has settled, the page sets on <body> data-images-ready="all" (or "broken"),
 // data-images-total and data-images-decoded (complete and naturalWidth > 0).
 struct HtmlOptions {
-  size_t image_budget = size_t(24) << 20;   // bytes of base64 image data in index.html
+  size_t image_budget = size_t(24) << 20;    // at most this many bytes of base64 image data
+  size_t max_page_bytes = size_t(28) << 20;  // and index.html stays under this in total
 };
 
 struct HtmlSummary {

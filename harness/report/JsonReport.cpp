@@ -282,7 +282,8 @@ std::string to_json(const RunReport& report) {
                  {"error", report.count("error")}};
   j["results"] = ojson::array();
   for (const CellResult& r : report.results) j["results"].push_back(cell_json(r));
-  return j.dump(2);
+  // Compiler output can hold any bytes: invalid UTF-8 becomes U+FFFD instead of an exception.
+  return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 Result<void> write_json(const RunReport& report, const std::string& path) {

@@ -49,7 +49,8 @@ std::string details(const CellResult& r) {
   std::string out;
   if (!r.message.empty()) out += r.message + "\n";
   out += metric_summary(r) + "\n";
-  out += fmt::format("psnr {} dB, {} bad pixels, {} NaN/Inf in the render\n", sci(m.psnr), m.bad_pixels, m.nonfinite);
+  out += fmt::format("psnr {} dB, {} bad pixels, {} NaN/Inf in the render\n", std::isfinite(m.psnr) ? fmt::format("{:.1f}", m.psnr) : sci(m.psnr),
+                     m.bad_pixels, m.nonfinite);
   out += fmt::format("coverage: {} drawn, {} in the reference, {:.1f} expected; {} interior, {} silhouette pixels\n",
                      m.covered_pixels, m.reference_covered_pixels, m.expected_area, m.interior_pixels, m.silhouette_pixels);
   for (const auto& [name, v] : {std::pair{"render", &m.render_values}, std::pair{"reference", &m.reference_values}})

@@ -1,0 +1,690 @@
+#include "report/HtmlReport.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "report/Markup.h"
+
+namespace shaderbed {
+namespace {
+
+namespace fs = std::filesystem;
+using markup::escape;
+using markup::sci;
+
+constexpr size_t kMaxImageFile = size_t(16) << 20;   // larger "PNGs" are not embedded
+
+std::string attr(std::string_view s) { return escape(s, true); }
+
+// A number for data-v (what the table sorts by): shortest round-trip text, or Infinity.
+std::string sort_value(double v) {
+  if (std::isnan(v) || (std::isinf(v) && v > 0)) return "Infinity";
+  if (std::isinf(v)) return "-Infinity";
+  return fmt::format("{}", v);
+}
+
+std::string db(double v) { return std::isfinite(v) ? fmt::format("{:.1f}", v) : sci(v); }
+
+bool shared_stage(const std::string& stage) { return stage == "compile" || stage == "reference"; }
+
+double own_ms(const CellResult& r) {
+  double ms = 0;
+  for (const auto& [stage, t] : r.time_ms)
+    if (!shared_stage(stage) && std::isfinite(t)) ms += t;
+  return ms;
+}
+
+// "pass", "fail" (new), "known", "error".
+std::string kind(const CellResult& r) {
+  if (r.status == "fail") return r.known_failure ? "known" : "fail";
+  return r.status == "pass" || r.status == "error" ? r.status : "error";
+}
+
+std::string status_label(const std::string& k) {
+  return k == "pass" ? "pass" : k == "fail" ? "FAIL" : k == "known" ? "known" : "ERROR";
+}
+
+int status_rank(const std::string& k) { return k == "error" ? 3 : k == "fail" ? 2 : k == "known" ? 1 : 0; }
+
+// Percent-encodes a relative path for href/src (keeps / and unreserved characters).
+std::string url_path(const std::string& path) {
+  std::string out;
+  for (unsigned char c : path) {
+    if (std::isalnum(c) || c == '/' || c == '-' || c == '_' || c == '.' || c == '~') out += char(c);
+    else out += fmt::format("%{:02X}", c);
+  }
+  return out;
+}
+
+uint64_t fnv1a(std::string_view s) {
+  uint64_t h = 1469598103934665603ull;
+  for (unsigned char c : s) h = (h ^ c) * 1099511628211ull;
+  return h;
+}
+
+bool read_file(const fs::path& path, std::string& out, size_t limit) {
+  std::error_code ec;
+  const auto size = fs::file_size(path, ec);
+  if (ec || size > limit) return false;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  std::ostringstream s;
+  s << in.rdbuf();
+  out = s.str();
+  return bool(in) || in.eof();
+}
+
+class Writer {
+ public:
+  Writer(const RunReport& report, const fs::path& dir, const HtmlOptions& options)
+      : report_(report), dir_(dir), options_(options) {}
+
+  Result<HtmlSummary> write() {
+    std::error_code ec;
+    fs::create_directories(dir_, ec);
+    if (ec || !fs::is_directory(dir_))
+      return std::unexpected(Error{.message = "cannot create the HTML report folder: " + ec.message(),
+                                   .file = dir_.string(), .stage = "report"});
+    index_groups();
+    if (auto ok = copy_sources(); !ok) return std::unexpected(ok.error());
+    // The page without images (every image as a file link, a little longer than a store
+    // key) bounds the markup; images get what is left of max_page_bytes.
+    const size_t markup = page().size();
+    choose_images(std::min(options_.image_budget, options_.max_page_bytes > markup ? options_.max_page_bytes - markup : 0));
+    const std::string html = page();
+    const fs::path index = dir_ / "index.html";
+    std::ofstream out(index, std::ios::binary);
+    if (!out) return std::unexpected(Error{.message = "cannot write HTML report", .file = index.string(), .stage = "report"});
+    out << html;
+    if (!out) return std::unexpected(Error{.message = "write failed", .file = index.string(), .stage = "report"});
+    summary_.index_path = index.string();
+    summary_.html_bytes = html.size();
+    return summary_;
+  }
+
+ private:
+  // ---- artefacts ----
+
+  // The file a recorded path names: as written, or under the run's folder.
+  std::string resolve(const std::string& path) const {
+    if (path.empty()) return "";
+    std::error_code ec;
+    if (fs::is_regular_file(path, ec)) return path;
+    if (fs::path(path).is_relative() && !report_.out_dir.empty()) {
+      const fs::path under = fs::path(report_.out_dir) / path;
+      if (fs::is_regular_file(under, ec)) return under.string();
+    }
+    return "";
+  }
+
+  std::string relative_url(const std::string& file) const {
+    std::error_code ec;
+    const fs::path rel = fs::relative(fs::absolute(file, ec), fs::absolute(dir_, ec), ec);
+    if (ec || rel.empty()) return "file://" + url_path(fs::absolute(file, ec).generic_string());
+    return url_path(rel.generic_string());
+  }
+
+  void index_groups() {
+    for (size_t i = 0; i < report_.results.size(); ++i) {
+      const CellResult& r = report_.results[i];
+      groups_[group_key(r)].push_back(i);
+    }
+  }
+  static std::string group_key(const CellResult& r) { return r.case_name + "/" + r.variant + "/" + r.shape; }
+
+  // Embeds one PNG if it exists, is a PNG and fits in the budget. Idempotent per path.
+  void consider(const std::string& recorded) {
+    if (recorded.empty() || considered_.contains(recorded)) return;
+    considered_.insert(recorded);
+    const std::string file = resolve(recorded);
+    if (file.empty()) return;
+    std::string bytes;
+    if (!read_file(file, bytes, kMaxImageFile) || bytes.size() < 8 || bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0) return;
+    const size_t encoded = (bytes.size() + 2) / 3 * 4 + 22;
+    if (summary_.image_bytes + encoded > budget_) return;
+    const std::string key = fmt::format("i{}", store_.size());
+    store_.push_back({key, "data:image/png;base64," + markup::base64(bytes)});
+    embedded_[recorded] = key;
+    summary_.image_bytes += encoded;
+  }
+
+  void choose_images(size_t budget) {
+    budget_ = budget;
+    const auto& cells = report_.results;
+    auto own = [&](const CellResult& r) {
+      consider(r.artefacts.reference_png);
+      consider(r.artefacts.render_png);
+      consider(r.artefacts.error_png);
+    };
+    // 1. Failing and erroring cells: new failures, errors, known failures.
+    for (const char* k : {"fail", "error", "known"})
+      for (const CellResult& r : cells)
+        if (kind(r) == k) own(r);
+    // 2. One passing example per case/variant.
+    std::set<std::string> example;
+    for (const CellResult& r : cells)
+      if (r.status == "pass" && example.insert(r.case_name + "/" + r.variant).second) own(r);
+    // 3. The other renders of a failing cell's case/variant/shape (the attribution evidence).
+    for (const CellResult& r : cells)
+      if (kind(r) != "pass")
+        for (size_t s : groups_.at(group_key(r))) consider(cells[s].artefacts.render_png);
+    // 4. Whatever still fits: references, then renders, then error maps.
+    for (const CellResult& r : cells) consider(r.artefacts.reference_png);
+    for (const CellResult& r : cells) consider(r.artefacts.render_png);
+    for (const CellResult& r : cells) consider(r.artefacts.error_png);
+    // Count what the page shows but does not embed.
+    std::set<std::string> seen;
+    for (const CellResult& r : cells)
+      for (const std::string* p : {&r.artefacts.reference_png, &r.artefacts.render_png, &r.artefacts.error_png}) {
+        if (p->empty() || embedded_.contains(*p) || !seen.insert(*p).second) continue;
+        (resolve(*p).empty() ? summary_.images_missing : summary_.images_linked)++;
+      }
+    summary_.images_embedded = store_.size();
+  }
+
+  // Copies each distinct source text into DIR/sources/, mirroring its place under the run's
+  // folder (else sources/other/HASH/NAME), with .txt appended so browsers display it.
+  Result<void> copy_sources() {
+    for (const CellResult& r : report_.results) {
+      const CellArtefacts& a = r.artefacts;
+      for (const std::string* p : {&a.vertex_spirv, &a.fragment_spirv, &a.vertex_cross_glsl, &a.fragment_cross_glsl}) {
+        if (p->empty() || sources_.contains(*p)) continue;
+        const std::string file = resolve(*p);
+        if (file.empty()) {
+          sources_[*p] = "";
+          continue;
+        }
+        std::error_code ec;
+        fs::path rel;
+        if (!report_.out_dir.empty()) {
+          rel = fs::relative(fs::absolute(file, ec), fs::absolute(report_.out_dir, ec), ec);
+          if (ec || rel.empty() || *rel.begin() == "..") rel.clear();
+        }
+        if (rel.empty())
+          rel = fs::path("other") / fmt::format("{:016x}", fnv1a(fs::absolute(file, ec).string())) / fs::path(file).filename();
+        rel = fs::path("sources") / (rel.string() + ".txt");
+        fs::create_directories((dir_ / rel).parent_path(), ec);
+        fs::copy_file(file, dir_ / rel, fs::copy_options::overwrite_existing, ec);
+        if (ec)
+          return std::unexpected(Error{.message = "cannot copy a shader source into the report: " + ec.message(),
+                                       .file = file, .stage = "report"});
+        sources_[*p] = url_path(rel.generic_string());
+        ++summary_.sources_copied;
+      }
+    }
+    return {};
+  }
+
+  // ---- markup ----
+
+  std::string image(const std::string& recorded, const std::string& label, const std::string& caption) const {
+    if (recorded.empty()) return "";
+    std::string body;
+    if (auto it = embedded_.find(recorded); it != embedded_.end()) {
+      body = fmt::format("<img data-img=\"{}\" alt=\"{}\" title=\"{}\">", it->second, attr(label), attr(recorded));
+    } else if (const std::string file = resolve(recorded); !file.empty()) {
+      body = fmt::format("<img data-file=\"{}\" alt=\"{}\" title=\"{}\">", attr(relative_url(file)), attr(label),
+                         attr(recorded));
+    } else {
+      body = fmt::format("<div class=\"missing\">missing<br><code>{}</code></div>", escape(recorded));
+    }
+    return fmt::format("<figure>{}<figcaption>{}</figcaption></figure>", body, caption);
+  }
+
+  std::string source_link(const std::string& recorded, const std::string& label) const {
+    if (recorded.empty()) return "";
+    const auto it = sources_.find(recorded);
+    if (it == sources_.end() || it->second.empty())
+      return fmt::format("<span class=\"missing\" title=\"{}\">{}: missing</span>", attr(recorded), escape(label));
+    return fmt::format("<a href=\"{}\" title=\"{}\">{}</a>", attr(it->second), attr(recorded), escape(label));
+  }
+
+  std::string file_link(const std::string& recorded, const std::string& label) const {
+    if (recorded.empty()) return "";
+    const std::string file = resolve(recorded);
+    if (file.empty()) return fmt::format("<span class=\"missing\" title=\"{}\">{}: missing</span>", attr(recorded), escape(label));
+    return fmt::format("<a href=\"{}\" title=\"{}\">{}</a>", attr(relative_url(file)), attr(recorded), escape(label));
+  }
+
+  static std::string join_nonempty(const std::vector<std::string>& parts, const char* sep) {
+    std::string out;
+    for (const std::string& p : parts)
+      if (!p.empty()) out += (out.empty() ? "" : sep) + p;
+    return out;
+  }
+
+  std::string card(size_t index) const {
+    const CellResult& r = report_.results[index];
+    const CellMetrics& m = r.metrics;
+    const CellArtefacts& a = r.artefacts;
+    const std::string k = kind(r);
+    std::string h = "<div class=\"card\">";
+    if (!r.message.empty()) h += fmt::format("<pre class=\"msg\">{}</pre>", escape(r.message));
+    if (!r.attribution.empty() || !r.attribution_reason.empty())
+      h += fmt::format("<p class=\"attr\"><b>attribution: {}</b>{}</p>", escape(r.attribution.empty() ? "-" : r.attribution),
+                       r.attribution_reason.empty() ? "" : " &mdash; " + escape(r.attribution_reason));
+    if (r.known_failure)
+      h += fmt::format("<p class=\"known\"><b>known failure</b>{}</p>",
+                       r.known_reason.empty() ? "" : ": " + escape(r.known_reason));
+
+    const std::string imgs = image(a.reference_png, "reference", "reference") + image(a.render_png, "render", "render") +
+                             image(a.error_png, "error heat map", "error (threshold = mid grey)");
+    if (!imgs.empty()) h += "<div class=\"imgs\">" + imgs + "</div>";
+    // Every render of this case/variant/shape, for failing cells: which ones agree.
+    if (k != "pass") {
+      std::string strip;
+      for (size_t s : groups_.at(group_key(r))) {
+        const CellResult& o = report_.results[s];
+        if (s == index || o.artefacts.render_png.empty()) continue;
+        strip += image(o.artefacts.render_png, "render " + o.language + " " + o.backend + "/" + o.path,
+                       fmt::format("{} {}/{} <span class=\"st {}\">{}</span>", escape(o.language), escape(o.backend),
+                                   escape(o.path), kind(o), status_label(kind(o))));
+      }
+      if (!strip.empty())
+        h += fmt::format("<div class=\"sib\"><div class=\"lbl\">all renders of {}/{}/{}</div><div class=\"imgs small\">{}</div></div>",
+                         escape(r.case_name), escape(r.variant), escape(r.shape), strip);
+    }
+
+    h += "<table class=\"kv\">";
+    auto row = [&](const std::string& key, const std::string& value) {
+      h += fmt::format("<tr><th>{}</th><td>{}</td></tr>", key, value);
+    };
+    if (r.status != "error") {
+      row("interior", fmt::format("max {} &nbsp; threshold {} &nbsp; smallest passing {} &nbsp; rmse {} &nbsp; psnr {} dB",
+                                  sci(m.max_abs), sci(r.interior_threshold), sci(m.min_passing_interior), sci(m.rmse),
+                                  db(m.psnr)));
+      row("silhouette", fmt::format("max {} &nbsp; threshold {} &nbsp; smallest passing {}", sci(m.silhouette_max_abs),
+                                    sci(r.silhouette_threshold), sci(m.min_passing_silhouette)));
+      row("pixels", fmt::format("{} bad, {} NaN/Inf in the render, {} NaN/Inf mismatches, {} coverage mismatches",
+                                m.bad_pixels, m.nonfinite, m.nonfinite_mismatch, m.coverage_mismatch));
+      row("coverage", fmt::format("{} drawn, {} in the reference, {:.1f} expected; {} interior, {} silhouette",
+                                  m.covered_pixels, m.reference_covered_pixels, m.expected_area, m.interior_pixels,
+                                  m.silhouette_pixels));
+      for (const auto& [name, v] : {std::pair{"render values", &m.render_values}, std::pair{"reference values", &m.reference_values}})
+        row(name, fmt::format("{} NaN, {} +Inf, {} -Inf, {} negative, {} above one", v->nan, v->pos_inf, v->neg_inf,
+                              v->negative, v->above_one));
+    }
+    if (!r.lut_derivation.empty() || r.lut_bound != 0)
+      row("LUT bound", fmt::format("{} &mdash; {}", sci(r.lut_bound), escape(r.lut_derivation)));
+    if (!r.time_ms.empty()) {
+      std::vector<std::string> t;
+      for (const auto& [stage, ms] : r.time_ms)
+        t.push_back(fmt::format("{} {:.2f}{}", escape(stage), ms, shared_stage(stage) ? "*" : ""));
+      row("time (ms)", join_nonempty(t, ", ") + " &nbsp;<small>(* shared by cells)</small>");
+    }
+    if (!r.vertex_spirv_hash.empty() || !r.fragment_spirv_hash.empty())
+      row("SPIR-V hash", fmt::format("vertex <code>{}</code> fragment <code>{}</code>", escape(r.vertex_spirv_hash),
+                                     escape(r.fragment_spirv_hash)));
+    const std::string sources =
+        join_nonempty({source_link(a.vertex_spirv, "vertex SPIR-V"), source_link(a.fragment_spirv, "fragment SPIR-V"),
+                       source_link(a.vertex_cross_glsl, "vertex GLSL (SPIRV-Cross)"),
+                       source_link(a.fragment_cross_glsl, "fragment GLSL (SPIRV-Cross)")},
+                      " &middot; ");
+    if (!sources.empty()) row("sources", sources);
+    const std::string files = join_nonempty({file_link(a.render_exr, "render.exr"), file_link(a.error_exr, "error.exr"),
+                                             file_link(a.render_png, "render.png"), file_link(a.error_png, "error.png"),
+                                             file_link(a.reference_png, "reference.png")},
+                                            " &middot; ");
+    if (!files.empty()) row("files", files + " &nbsp;<small>(in the run's folder)</small>");
+    row("id", "<code>" + escape(r.id()) + "</code>");
+    h += "</table></div>";
+    return h;
+  }
+
+  std::string table_row(size_t i) const {
+    const CellResult& r = report_.results[i];
+    const CellMetrics& m = r.metrics;
+    const std::string k = kind(r);
+    const bool measured = r.status != "error";
+    auto num = [&](double v, bool shown) {
+      return shown ? fmt::format("<td class=\"n\" data-v=\"{}\">{}</td>", sort_value(v), sci(v)) : "<td class=\"n\" data-v=\"\">-</td>";
+    };
+    std::string h = fmt::format("<tbody class=\"cell {}\" id=\"c{}\" data-i=\"{}\"><tr class=\"row\" tabindex=\"0\">", k, i, i);
+    h += fmt::format("<td class=\"n\" data-v=\"{}\">{}</td>", i, i + 1);
+    for (const std::string* s : {&r.case_name, &r.variant, &r.language, &r.backend, &r.path, &r.shape})
+      h += "<td>" + escape(*s) + "</td>";
+    h += fmt::format("<td data-v=\"{}\"><span class=\"st {}\">{}</span></td>", status_rank(k), k, status_label(k));
+    h += num(m.max_abs, measured);
+    h += num(r.interior_threshold, measured);
+    h += num(m.min_passing_interior, measured);
+    h += num(m.silhouette_max_abs, measured);
+    h += num(m.rmse, measured);
+    h += measured ? fmt::format("<td class=\"n\" data-v=\"{}\">{}</td>", sort_value(m.psnr), db(m.psnr))
+                  : "<td class=\"n\" data-v=\"\">-</td>";
+    h += "<td>" + escape(r.attribution) + "</td>";
+    h += fmt::format("<td class=\"n\" data-v=\"{}\">{:.1f}</td>", sort_value(own_ms(r)), own_ms(r));
+    h += fmt::format("</tr><tr class=\"detail\" hidden><td colspan=\"{}\">{}</td></tr></tbody>\n", kColumns, card(i));
+    return h;
+  }
+
+  static constexpr int kColumns = 16;
+
+  std::string failure_section(const char* k, const char* title, size_t open_limit) const {
+    std::vector<size_t> cells;
+    for (size_t i = 0; i < report_.results.size(); ++i)
+      if (kind(report_.results[i]) == k) cells.push_back(i);
+    if (cells.empty()) return "";
+    std::string h = fmt::format("<section class=\"fails\" id=\"sec-{}\"><h2>{} ({})</h2>\n", k, title, cells.size());
+    for (size_t n = 0; n < cells.size(); ++n) {
+      const size_t i = cells[n];
+      const CellResult& r = report_.results[i];
+      std::string headline = r.message.substr(0, r.message.find('\n'));
+      if (headline.size() > 160) headline = headline.substr(0, 157) + "...";
+      h += fmt::format(
+          "<details class=\"fc\" id=\"f{}\"{}><summary><span class=\"st {}\">{}</span> <b>{}</b> {} &nbsp;<span "
+          "class=\"why\">{}{}</span> <a class=\"jump\" href=\"#c{}\">table&nbsp;row</a></summary>{}</details>\n",
+          i, n < open_limit ? " open" : "", k, status_label(k),
+          escape(r.case_name + " " + r.variant + " " + r.language),
+          escape(r.backend + "/" + r.path + " " + r.shape), escape(headline),
+          r.attribution.empty() ? "" : " &mdash; " + escape(r.attribution), i, card(i));
+    }
+    return h + "</section>\n";
+  }
+
+  std::string page() const {
+    const ToolVersions& t = report_.tools;
+    size_t known = 0;
+    for (const CellResult& r : report_.results) known += kind(r) == "known";
+    const size_t fails = report_.count("fail") - known;
+    auto unknown = [](const std::string& s) { return s.empty() ? std::string("<i>unknown</i>") : escape(s); };
+
+    std::string h;
+    h.reserve(summary_.image_bytes + report_.results.size() * 4096 + 65536);
+    h += "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
+         "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
+         "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; img-src data: file: 'self'; "
+         "style-src 'unsafe-inline'; script-src 'unsafe-inline'\">\n";
+    h += fmt::format("<title>shaderbed: {} passed, {} failed, {} known, {} errors</title>\n", report_.count("pass"), fails,
+                     known, report_.count("error"));
+    h += "<style>\n" + std::string(kCss) + "</style>\n</head>\n";
+    h += fmt::format("<body data-cells=\"{}\" data-images-ready=\"pending\">\n", report_.results.size());
+    h += "<header><h1>shaderbed report</h1>\n<div class=\"totals\">";
+    h += fmt::format("<span class=\"tot\"><b>{}</b> cells</span>", report_.results.size());
+    h += fmt::format("<span class=\"tot st pass\"><b>{}</b> passed</span>", report_.count("pass"));
+    h += fmt::format("<span class=\"tot st fail\"><b>{}</b> failed</span>", fails);
+    h += fmt::format("<span class=\"tot st known\"><b>{}</b> known failures</span>", known);
+    h += fmt::format("<span class=\"tot st error\"><b>{}</b> errors</span>", report_.count("error"));
+    h += fmt::format("<span class=\"tot\">{:.1f} s</span>", report_.wall_ms / 1000.0);
+    h += fmt::format("<span class=\"verdict {}\">{}</span>", report_.acceptable() ? "ok" : "bad",
+                     report_.acceptable() ? "acceptable" : "NOT acceptable");
+    h += "</div>\n<table class=\"kv tools\">";
+    h += fmt::format("<tr><th>glslang</th><td>{}</td><th>SPIRV-Tools</th><td>{}</td><th>SPIRV-Cross</th><td>{}</td></tr>",
+                     unknown(t.glslang), unknown(t.spirv_tools), unknown(t.spirv_cross));
+    h += fmt::format("<tr><th>Mesa (Vulkan)</th><td>{}</td><th>Mesa (GL)</th><td>{}</td><th>LLVM</th><td>{}</td></tr>",
+                     unknown(t.vulkan_driver), unknown(t.gl_driver), unknown(t.llvm));
+    h += fmt::format("<tr><th>shard</th><td>{}</td><th>run folder</th><td colspan=\"3\"><code>{}</code></td></tr>",
+                     report_.shard.empty() ? "whole run" : escape(report_.shard), escape(report_.out_dir));
+    h += "</table>\n";
+    h += fmt::format(
+        "<p class=\"policy\">Images: {} embedded ({:.1f} MB), {} linked to the run's files, {} missing. Embedded first: "
+        "failing cells, one passing example per case/variant, other renders of failing shapes, then the rest while the budget lasts. Error heat maps show the "
+        "interior threshold as mid grey. Click a table header to sort, a row for details, an image to zoom.</p>\n",
+        summary_.images_embedded, summary_.image_bytes / 1048576.0, summary_.images_linked, summary_.images_missing);
+    std::string nav;
+    for (const auto& [k, title] : {std::pair{"fail", "failures"}, std::pair{"error", "errors"}, std::pair{"known", "known failures"}}) {
+      size_t n = 0;
+      for (const CellResult& r : report_.results) n += kind(r) == k;
+      if (n) nav += fmt::format("<a href=\"#sec-{}\">{} ({})</a>", k, title, n);
+    }
+    h += "<nav>" + nav + "<a href=\"#all\">all cells</a></nav>\n";
+    h += "</header>\n<main>\n";
+
+    h += failure_section("fail", "Failures", 40);
+    h += failure_section("error", "Errors", 20);
+    h += failure_section("known", "Known failures", 0);
+
+    h += "<section id=\"all\"><h2>All cells</h2>\n<div class=\"filters\"><input id=\"filter\" type=\"search\" "
+         "placeholder=\"filter: text in any column\" size=\"40\"> <select id=\"status\"><option value=\"\">all</option>"
+         "<option value=\"failing\">not passing</option><option value=\"fail\">failed</option><option "
+         "value=\"known\">known</option><option value=\"error\">errors</option><option value=\"pass\">passed</option>"
+         "</select> <span id=\"shown\"></span> <button id=\"expand\" type=\"button\">expand shown</button> <button "
+         "id=\"collapse\" type=\"button\">collapse all</button></div>\n";
+    h += "<table id=\"cells\"><thead><tr>";
+    const char* const cols[kColumns][3] = {
+        {"index", "num", "#"},          {"case", "str", "case"},       {"variant", "str", "variant"},
+        {"language", "str", "lang"},    {"backend", "str", "backend"}, {"path", "str", "path"},
+        {"shape", "str", "shape"},      {"status", "num", "status"},   {"max_abs", "num", "max err"},
+        {"threshold", "num", "threshold"}, {"min_passing", "num", "min passing"}, {"silhouette", "num", "silh. err"},
+        {"rmse", "num", "rmse"},        {"psnr", "num", "psnr"},       {"attribution", "str", "attribution"},
+        {"ms", "num", "ms"}};
+    for (const auto& c : cols) {
+      const std::string key = c[0];
+      const char* title = key == "max_abs"       ? "largest interior error"
+                          : key == "threshold"   ? "the case's interior threshold (with the LUT bound for LUT variants)"
+                          : key == "min_passing" ? "the smallest interior threshold that would have passed"
+                          : key == "silhouette"  ? "largest silhouette-band error"
+                          : key == "psnr"        ? "interior PSNR in dB, peak 1"
+                          : key == "ms"          ? "this cell's own time: build, draw, readback, compare"
+                                                 : "";
+      h += fmt::format("<th data-key=\"{}\" data-type=\"{}\" tabindex=\"0\"{}>{}</th>", c[0], c[1],
+                       *title ? fmt::format(" title=\"{}\"", title) : "", c[2]);
+    }
+    h += "</tr></thead>\n";
+    for (size_t i = 0; i < report_.results.size(); ++i) h += table_row(i);
+    h += "</table></section>\n</main>\n";
+
+    // The image store: each distinct PNG once, set on <img data-img> when its card is shown.
+    h += "<script type=\"application/json\" id=\"sb-images\">{";
+    for (size_t i = 0; i < store_.size(); ++i)
+      h += fmt::format("{}\"{}\":\"{}\"", i ? ",\n" : "", store_[i].first, store_[i].second);
+    h += "}</script>\n<script>\n" + std::string(kScript) + "</script>\n</body></html>\n";
+    return h;
+  }
+
+  static constexpr const char* kCss = R"css(
+body{font:14px/1.4 system-ui,-apple-system,"Segoe UI",sans-serif;margin:0;color:#1d1f23;background:#fafafa}
+header{padding:12px 20px;background:#fff;border-bottom:1px solid #ddd}
+h1{margin:0 0 8px;font-size:20px} h2{font-size:16px;margin:18px 0 8px}
+main{padding:0 20px 40px}
+code,pre{font:12px/1.35 ui-monospace,"DejaVu Sans Mono",monospace}
+.totals{display:flex;flex-wrap:wrap;gap:10px;align-items:center;margin-bottom:8px}
+.tot{padding:2px 8px;border-radius:4px;background:#eee}
+.verdict{font-weight:bold;padding:2px 8px;border-radius:4px}
+.verdict.ok{background:#d6f5dc;color:#145c22}.verdict.bad{background:#fbd5d5;color:#8a1111}
+.st{padding:0 6px;border-radius:3px;font-weight:600;white-space:nowrap}
+.st.pass{background:#d6f5dc;color:#145c22}.st.fail{background:#fbd5d5;color:#8a1111}
+.st.known{background:#fdf0c4;color:#6b5200}.st.error{background:#e7d4f7;color:#4b1677}
+table.kv{border-collapse:collapse;margin:6px 0}
+table.kv th{text-align:left;font-weight:600;padding:1px 10px 1px 0;vertical-align:top;white-space:nowrap;color:#444}
+table.kv td{padding:1px 16px 1px 0;vertical-align:top}
+nav{font-size:13px;margin-top:6px}nav a{margin-right:12px}
+.policy{color:#555;font-size:12px;margin:6px 0 0}
+.fails details.fc{background:#fff;border:1px solid #ddd;border-radius:4px;margin:6px 0;padding:4px 8px}
+.fails summary{cursor:pointer}.why{color:#555}.jump{font-size:12px;margin-left:8px}
+.card{padding:6px 2px}
+.msg{white-space:pre-wrap;background:#f4f4f4;padding:6px;margin:4px 0;max-height:16em;overflow:auto}
+.attr,.known{margin:4px 0}
+.imgs{display:flex;flex-wrap:wrap;gap:8px;margin:6px 0}
+figure{margin:0;text-align:center;font-size:12px;color:#444}
+figure img{width:192px;height:auto;image-rendering:pixelated;background:#222;border:1px solid #ccc;cursor:zoom-in;display:block}
+figure img.zoom{width:auto;max-width:none;min-width:384px;cursor:zoom-out}
+.imgs.small figure img{width:112px}
+.sib .lbl{font-size:12px;color:#555;margin-top:4px}
+.missing{color:#8a1111;font-size:12px;width:192px;padding:8px 0;border:1px dashed #c88}
+#cells{border-collapse:collapse;width:100%;background:#fff;font-size:13px}
+#cells th{position:sticky;top:0;background:#e9ecef;text-align:left;padding:4px 6px;cursor:pointer;user-select:none;white-space:nowrap;border-bottom:1px solid #bbb}
+#cells th[aria-sort=ascending]::after{content:" \25B2"}#cells th[aria-sort=descending]::after{content:" \25BC"}
+#cells td{padding:2px 6px;border-bottom:1px solid #eee;white-space:nowrap}
+#cells td.n{text-align:right;font-variant-numeric:tabular-nums}
+#cells tr.row{cursor:pointer}#cells tr.row:hover{background:#f2f6ff}
+#cells tbody.fail tr.row{background:#fff4f4}#cells tbody.error tr.row{background:#faf4ff}#cells tbody.known tr.row{background:#fffbeb}
+#cells tr.detail>td{white-space:normal;background:#fcfcfc;border-bottom:2px solid #ccc}
+.filters{margin:6px 0}
+)css";
+
+  static constexpr const char* kScript = R"js(
+(function () {
+  'use strict';
+  var store = JSON.parse(document.getElementById('sb-images').textContent);
+  var body = document.body;
+  var table = document.getElementById('cells');
+  var timer = null;
+
+  // Readiness for people and for tests: every <img> that has a source is complete and decoded.
+  function check() {
+    var imgs = Array.prototype.slice.call(document.querySelectorAll('img[src]'));
+    if (imgs.some(function (i) { return !i.complete; })) { timer = setTimeout(check, 25); return; }
+    var ok = imgs.filter(function (i) { return i.naturalWidth > 0; }).length;
+    body.setAttribute('data-images-total', imgs.length);
+    body.setAttribute('data-images-decoded', ok);
+    body.setAttribute('data-images-ready', ok === imgs.length ? 'all' : 'broken');
+  }
+  function settle() {
+    body.setAttribute('data-images-ready', 'pending');
+    clearTimeout(timer);
+    timer = setTimeout(check, 0);
+  }
+  function show(root) {
+    var imgs = root.querySelectorAll('img[data-img]:not([src]), img[data-file]:not([src])');
+    if (!imgs.length) return;
+    Array.prototype.forEach.call(imgs, function (img) {
+      if (img.dataset.img) { img.src = store[img.dataset.img]; return; }
+      img.onerror = function () {
+        var d = document.createElement('div');
+        d.className = 'missing';
+        d.textContent = 'not embedded, not found next to the report: ' + img.title;
+        img.replaceWith(d);
+        settle();
+      };
+      img.src = img.dataset.file;
+    });
+    settle();
+  }
+  function toggle(tbody, open) {
+    var detail = tbody.rows[1];
+    if (open === undefined) open = detail.hidden;
+    detail.hidden = !open;
+    if (open) show(detail);
+  }
+
+  document.addEventListener('click', function (e) {
+    var img = e.target.closest('figure img');
+    if (img) { img.classList.toggle('zoom'); return; }
+    var row = e.target.closest('#cells tr.row');
+    if (row && !e.target.closest('a')) toggle(row.parentNode);
+    var jump = e.target.closest('a.jump');
+    if (jump) {
+      var target = document.getElementById(jump.getAttribute('href').slice(1));
+      if (target) { target.hidden = false; toggle(target, true); }
+    }
+  });
+  document.addEventListener('keydown', function (e) {
+    if (e.key !== 'Enter' && e.key !== ' ') return;
+    var row = e.target.closest && e.target.closest('#cells tr.row');
+    if (row) { e.preventDefault(); toggle(row.parentNode); }
+    var th = e.target.closest && e.target.closest('#cells th');
+    if (th) { e.preventDefault(); sortBy(th); }
+  });
+  Array.prototype.forEach.call(document.querySelectorAll('details.fc'), function (d) {
+    if (d.open) show(d);
+    d.addEventListener('toggle', function () { if (d.open) show(d); });
+  });
+
+  // Sorting: numbers by data-v (unmeasured cells last either way), text by content; ties
+  // keep the run's order.
+  function sortBy(th, desc) {
+    var col = th.cellIndex, numeric = th.dataset.type === 'num';
+    if (desc === undefined) desc = th.getAttribute('aria-sort') === 'ascending';
+    var bodies = Array.prototype.slice.call(table.tBodies);
+    bodies.sort(function (a, b) {
+      var x = a.rows[0].cells[col], y = b.rows[0].cells[col], c;
+      if (numeric) {
+        var xm = x.dataset.v === '', ym = y.dataset.v === '';
+        if (xm || ym) c = xm === ym ? 0 : (xm ? 1 : -1);
+        else {
+          var xv = parseFloat(x.dataset.v), yv = parseFloat(y.dataset.v);
+          c = xv < yv ? -1 : xv > yv ? 1 : 0;
+          if (desc) c = -c;
+        }
+      } else {
+        c = x.textContent.localeCompare(y.textContent);
+        if (desc) c = -c;
+      }
+      return c || (+a.dataset.i - +b.dataset.i);
+    });
+    var frag = document.createDocumentFragment();
+    bodies.forEach(function (b) { frag.appendChild(b); });
+    table.appendChild(frag);
+    Array.prototype.forEach.call(table.tHead.rows[0].cells, function (h) { h.removeAttribute('aria-sort'); });
+    th.setAttribute('aria-sort', desc ? 'descending' : 'ascending');
+    body.setAttribute('data-sorted', th.dataset.key + (desc ? ':desc' : ''));
+  }
+  Array.prototype.forEach.call(table.tHead.rows[0].cells, function (th) {
+    th.addEventListener('click', function () { sortBy(th); });
+  });
+
+  // Filtering by text and status.
+  var filter = document.getElementById('filter'), status = document.getElementById('status');
+  function apply() {
+    var text = filter.value.toLowerCase(), st = status.value, shown = 0;
+    Array.prototype.forEach.call(table.tBodies, function (b) {
+      var k = b.classList.contains('pass') ? 'pass' : b.classList.contains('fail') ? 'fail'
+            : b.classList.contains('known') ? 'known' : 'error';
+      var ok = (!st || st === k || (st === 'failing' && k !== 'pass')) &&
+               (!text || b.rows[0].textContent.toLowerCase().indexOf(text) >= 0);
+      b.hidden = !ok;
+      shown += ok;
+    });
+    document.getElementById('shown').textContent = shown + ' of ' + table.tBodies.length + ' shown';
+  }
+  filter.addEventListener('input', apply);
+  status.addEventListener('change', apply);
+  document.getElementById('expand').addEventListener('click', function () {
+    Array.prototype.forEach.call(table.tBodies, function (b) { if (!b.hidden) toggle(b, true); });
+  });
+  document.getElementById('collapse').addEventListener('click', function () {
+    Array.prototype.forEach.call(table.tBodies, function (b) { toggle(b, false); });
+  });
+
+  // URL fragment: #expand-all&sort=max_abs:desc&status=failing&filter=text
+  location.hash.slice(1).split('&').forEach(function (opt) {
+    var eq = opt.indexOf('='), key = eq < 0 ? opt : opt.slice(0, eq), value = eq < 0 ? '' : decodeURIComponent(opt.slice(eq + 1));
+    if (key === 'filter') filter.value = value;
+    if (key === 'status') status.value = value;
+    if (key === 'sort') {
+      var parts = value.split(':'), th = table.querySelector('th[data-key="' + parts[0] + '"]');
+      if (th) sortBy(th, parts[1] === 'desc');
+    }
+  });
+  apply();
+  if (/(^|&)expand-all(&|$)/.test(location.hash.slice(1)))
+    Array.prototype.forEach.call(table.tBodies, function (b) { if (!b.hidden) toggle(b, true); });
+  settle();
+})();
+)js";
+
+  const RunReport& report_;
+  fs::path dir_;
+  HtmlOptions options_;
+  HtmlSummary summary_;
+  size_t budget_ = 0;
+  std::map<std::string, std::vector<size_t>> groups_;
+  std::set<std::string> considered_;
+  std::map<std::string, std::string> embedded_;   // recorded path -> store key
+  std::vector<std::pair<std::string, std::string>> store_;   // key, data URI
+  std::map<std::string, std::string> sources_;    // recorded path -> relative URL ("" = missing)
+};
+
+}  // namespace
+
+Result<HtmlSummary> write_html(const RunReport& report, const std::string& dir, const HtmlOptions& options) {
+  return Writer(report, dir, options).write();
+}
+
+Result<void> write_html(const RunReport& report, const std::string& dir) {
+  auto summary = write_html(report, dir, HtmlOptions{});
+  if (!summary) return std::unexpected(summary.error());
+  return {};
+}
+
+}  // namespace shaderbed
