@@ -147,6 +147,32 @@ TEST(EndToEnd, CliExitCodes) {
   EXPECT_NE(help.find("--backend"), std::string::npos);
 }
 
+TEST(EndToEnd, TwoShardsMergedByTheCliEqualOneRun) {
+  const fs::path dir = fs::temp_directory_path() / ("shaderbed_merge_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  const std::string common = " --case lambert,spot --shape cube,torus --size 48 ";
+  ASSERT_EQ(shaderbed_cli("run" + common + "--json " + (dir / "whole.json").string()).first, 0);
+  ASSERT_EQ(shaderbed_cli("run" + common + "--shard 1/2 --json " + (dir / "a.json").string()).first, 0);
+  ASSERT_EQ(shaderbed_cli("run" + common + "--shard 2/2 --json " + (dir / "b.json").string()).first, 0);
+  auto [status, out] = shaderbed_cli("merge " + (dir / "a.json").string() + " " + (dir / "b.json").string() +
+                                     " --json " + (dir / "merged.json").string() + " --junit " +
+                                     (dir / "merged.xml").string());
+  ASSERT_EQ(status, 0) << out;
+  auto load = [&](const char* name) { return nlohmann::json::parse(std::ifstream(dir / name)); };
+  const nlohmann::json whole = load("whole.json"), merged = load("merged.json");
+  ASSERT_EQ(whole["results"].size(), merged["results"].size());
+  for (size_t i = 0; i < whole["results"].size(); ++i) {
+    nlohmann::json a = whole["results"][i], b = merged["results"][i];
+    a.erase("time_ms");   // timings differ run to run; everything else must not
+    b.erase("time_ms");
+    EXPECT_EQ(a, b) << i;
+  }
+  EXPECT_TRUE(fs::exists(dir / "merged.xml"));
+  EXPECT_EQ(shaderbed_cli("merge " + (dir / "a.json").string() + " " + (dir / "a.json").string()).first, 2)
+      << "the same cells twice is bad input";
+  fs::remove_all(dir);
+}
+
 TEST(EndToEnd, BadCaseFileIsOneLineWithFileAndLine) {
   const fs::path dir = fs::temp_directory_path() / ("shaderbed_badcase_" + std::to_string(::getpid()));
   fs::create_directories(dir / "cases");

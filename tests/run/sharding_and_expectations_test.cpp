@@ -6,7 +6,6 @@
 
 #include "cli/run/CellPlan.h"
 #include "cli/run/Expectations.h"
-#include "cli/run/Runner.h"
 
 namespace shaderbed {
 namespace {
@@ -19,34 +18,6 @@ TEST(Shard, ParsesAndRejects) {
   EXPECT_EQ(s->index, 2);
   EXPECT_EQ(s->count, 5);
   for (const char* bad : {"0/3", "4/3", "1/0", "x/2", "1-2", "1/", "/2"}) EXPECT_FALSE(parse_shard(bad)) << bad;
-}
-
-TEST(Shard, TwoShardsMergedEqualTheWholeRun) {
-  RunOptions whole;
-  whole.cases = {"lambert", "ambient"};
-  whole.shapes = {"sphere", "torus"};
-  whole.size = 48;
-  auto all = run_suite(whole);
-  ASSERT_TRUE(all) << all.error().to_string();
-  RunReport merged;
-  for (const char* s : {"1/2", "2/2"}) {
-    RunOptions part = whole;
-    part.shard = s;
-    auto shard = run_suite(part);
-    ASSERT_TRUE(shard) << shard.error().to_string();
-    EXPECT_LT(shard->results.size(), all->results.size()) << s;
-    merged.results.insert(merged.results.end(), shard->results.begin(), shard->results.end());
-  }
-  sort_results(merged);
-  ASSERT_EQ(merged.results.size(), all->results.size());
-  for (size_t i = 0; i < merged.results.size(); ++i) {
-    const CellResult &a = all->results[i], &b = merged.results[i];
-    EXPECT_EQ(a.id(), b.id());
-    EXPECT_EQ(a.status, b.status) << a.id();
-    // The drivers are deterministic: the same cell renders the same pixels in any shard.
-    EXPECT_EQ(a.metrics.max_abs, b.metrics.max_abs) << a.id();
-    EXPECT_EQ(a.metrics.rmse, b.metrics.rmse) << a.id();
-  }
 }
 
 TEST(Expectations, PatternsMatchWholeSegments) {

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands/Command.h"
+#include "cli/commands/ReportOutputs.h"
 #include "cli/run/Runner.h"
 #include "report/ConsoleTable.h"
 #include "report/JsonReport.h"
@@ -33,7 +34,7 @@ class Progress {
 
 struct RunArguments {
   RunOptions options;
-  std::string json_path;
+  ReportOutputs outputs;
 };
 
 }  // namespace
@@ -52,7 +53,7 @@ Command add_run_command(CLI::App& app) {
                   "Override a case parameter: name=value or name=v1,v2,v3 (repeatable), e.g. --param power=20");
   cmd->add_option("--size", run.size, "Image width and height in pixels")->capture_default_str();
   cmd->add_option("--out", run.out_dir, "Folder for renders, references and error images (EXR + PNG)");
-  cmd->add_option("--json", args->json_path, "Write the results as JSON to this file");
+  args->outputs.add_options(cmd);
   cmd->add_option("--shard", run.shard,
                   "Run shard I of N (e.g. 2/4): case x variant x shape groups are dealt round-robin, so shards "
                   "merged with 'shaderbed merge' equal one whole run");
@@ -71,13 +72,7 @@ Command add_run_command(CLI::App& app) {
               return kExitBadInput;
             }
             print_table(*report, stdout);
-            if (!args->json_path.empty()) {
-              if (auto ok = write_json(*report, args->json_path); !ok) {
-                fmt::print(stderr, "shaderbed: {}\n", ok.error().to_string());
-                return kExitFail;
-              }
-              fmt::print("results: {}\n", std::filesystem::absolute(args->json_path).string());
-            }
+            if (!args->outputs.write(*report)) return kExitFail;
             if (!options.out_dir.empty())
               fmt::print("images: {}/<case>/<variant>/<shape>/\n", std::filesystem::absolute(options.out_dir).string());
             return report->acceptable() ? 0 : kExitFail;

@@ -1,0 +1,55 @@
+// `shaderbed merge A.json B.json ...`: joins shard results into one report, in the same
+// canonical order as one whole run.
+#include <memory>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "cli/commands/Command.h"
+#include "cli/commands/ReportOutputs.h"
+#include "cli/run/Runner.h"
+#include "report/ConsoleTable.h"
+#include "report/JsonReport.h"
+
+namespace shaderbed {
+namespace {
+
+struct MergeArguments {
+  std::vector<std::string> inputs;
+  ReportOutputs outputs;
+};
+
+}  // namespace
+
+Command add_merge_command(CLI::App& app) {
+  auto args = std::make_shared<MergeArguments>();
+  CLI::App* cmd = app.add_subcommand("merge", "Join the JSON results of shards (or CI matrix jobs) into one report");
+  cmd->add_option("results", args->inputs, "JSON result files written by 'shaderbed run --json'")->required();
+  args->outputs.add_options(cmd);
+  return {cmd, [args] {
+            RunReport merged;
+            std::set<std::string> seen;
+            for (const std::string& path : args->inputs) {
+              auto part = read_json(path);
+              if (!part) {
+                fmt::print(stderr, "shaderbed: {}\n", part.error().to_string());
+                return kExitBadInput;
+              }
+              if (merged.results.empty()) merged.tools = part->tools;
+              merged.wall_ms += part->wall_ms;
+              for (CellResult& r : part->results) {
+                if (!seen.insert(r.id()).second) {
+                  fmt::print(stderr, "shaderbed: {}: cell {} is already in an earlier file\n", path, r.id());
+                  return kExitBadInput;
+                }
+                merged.results.push_back(std::move(r));
+              }
+            }
+            sort_results(merged);
+            print_table(merged, stdout);
+            if (!args->outputs.write(merged)) return kExitFail;
+            return merged.acceptable() ? 0 : kExitFail;
+          }};
+}
+
+}  // namespace shaderbed
