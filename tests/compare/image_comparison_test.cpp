@@ -129,8 +129,8 @@ TEST(Compare, HalfSizeRenderFailsOnItsCoverage) {
 
 TEST(Compare, ScaledRenderFailsButSubPixelEdgeDifferencesPass) {
   const ReferenceImage ref = disc_reference();
-  // A rasteriser whose edges land up to 0.4 px further out: a legitimate difference.
-  const Comparison slightly = compare_images(disc_render(20.4), ref, kThresholds, disc_area(20));
+  // A rasteriser whose edges land a fifth of a pixel further out: a legitimate difference.
+  const Comparison slightly = compare_images(disc_render(20.2), ref, kThresholds, disc_area(20));
   EXPECT_TRUE(slightly.pass) << slightly.reason;
   EXPECT_FALSE(slightly.degenerate);
   EXPECT_GT(slightly.covered_pixels, slightly.reference_covered_pixels);
@@ -140,14 +140,27 @@ TEST(Compare, ScaledRenderFailsButSubPixelEdgeDifferencesPass) {
   EXPECT_TRUE(scaled.degenerate) << scaled.reason;
 }
 
+TEST(Compare, OnePercentScaleFailsAt256) {
+  // A disc the size of the scene's sphere at 256 px: a 1 % larger render fails on its
+  // count alone (huge thresholds), a quarter pixel of edge growth does not.
+  const ReferenceImage ref = disc_reference(70, 128, 128, 256);
+  const Comparison scaled = compare_images(disc_render(70.7, 128, 128, 256), ref, {1e30, 1e30}, disc_area(70));
+  EXPECT_TRUE(scaled.degenerate) << scaled.reason;
+  EXPECT_FALSE(scaled.pass);
+  const Comparison grown = compare_images(disc_render(70.25, 128, 128, 256), ref, {1e30, 1e30}, disc_area(70));
+  EXPECT_FALSE(grown.degenerate) << grown.reason;
+  EXPECT_TRUE(grown.pass) << grown.reason;
+}
+
 TEST(Compare, CoverageAllowanceFollowsTheOutline) {
   const ReferenceImage ref = disc_reference();
   const Comparison c = compare_images(copy_of(ref), ref, kThresholds);
-  EXPECT_EQ(c.allowed_coverage_difference, c.silhouette.pixels / 4);
-  // The band is about two pixels along the outline: the allowance is about half the perimeter.
-  EXPECT_NEAR(double(c.allowed_coverage_difference), std::numbers::pi * 20, 12);
-  EXPECT_EQ(coverage_allowance(0), 4u);
-  EXPECT_EQ(coverage_allowance(1000), 250u);
+  EXPECT_EQ(c.allowed_coverage_difference, 8 + c.silhouette.pixels / 8);
+  // The band is about 8/pi pixels per pixel of outline: the allowance is 8 px plus
+  // about a third of the perimeter.
+  EXPECT_NEAR(double(c.allowed_coverage_difference), 8 + 2 * std::numbers::pi * 20 / 3, 4);
+  EXPECT_EQ(coverage_allowance(0), 8u);
+  EXPECT_EQ(coverage_allowance(1000), 133u);
 }
 
 TEST(Compare, ShiftedRenderFailsOnCoverageNotOnCount) {

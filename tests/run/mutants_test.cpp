@@ -247,6 +247,8 @@ TEST_P(MutantCase, IsCaughtAndAttributed) {
       EXPECT_GT(r.metrics.interior_pixels, 0u);
       EXPECT_GE(r.metrics.coverage_mismatch, r.metrics.interior_pixels)
           << m.name << " " << cell << " should draw none of the reference's interior: " << r.message;
+      if (r.metrics.reference_covered_pixels > 0)   // once the runner reports coverage counts
+        EXPECT_EQ(r.metrics.covered_pixels, 0u) << m.name << " " << cell << " should draw nothing: " << r.message;
     }
     verdicts[r.attribution].push_back(cell);
   }
@@ -293,6 +295,7 @@ TEST(MutantCorpus, LibraryShadersTheMutantsDeriveFromPass) {
   ASSERT_FALSE(runs.empty());
   for (const auto& [case_variant, shapes] : runs) {
     RunOptions o;
+    o.cases_dir = (kSource / "shaders" / "cases").string();
     o.cases = {case_variant.first};
     o.variants = {case_variant.second};
     o.shapes.assign(shapes.begin(), shapes.end());
