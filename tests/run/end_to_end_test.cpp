@@ -139,7 +139,7 @@ TEST(EndToEnd, CliExitCodes) {
   EXPECT_EQ(shaderbed_cli("run --size abc").first, 2);
   EXPECT_EQ(shaderbed_cli("frobnicate").first, 2);
   auto [status, out] = shaderbed_cli("run --cases-dir " + (kSource / "tests" / "mutants" / "cases").string() +
-                                     " --shape sphere --size 64");
+                                     " --case phong_reflect_sign --shape sphere --size 64");
   EXPECT_EQ(status, 1) << out;
   EXPECT_NE(out.find("FAIL"), std::string::npos) << out;
   auto [help_status, help] = shaderbed_cli("run --help");

@@ -269,7 +269,7 @@ TEST_P(MutantCase, IsCaughtAndAttributed) {
         std::string list;
         for (const std::string& c : cells) list += "\n    " + c;
         ADD_FAILURE() << "WRONG ATTRIBUTION: " << m.name << ": " << cells.size() << " failing cells attributed to \""
-                      << verdict << "\", expected \"" << m.attribution << "\" (" << m.reason << "):" << list;
+                      << (verdict.empty() ? "(none)" : verdict) << "\", expected \"" << m.attribution << "\" (" << m.reason << "):" << list;
       }
   }
 
