@@ -179,10 +179,12 @@ std::vector<Verdict> attribute_failures(std::span<const RenderOutcome> renders, 
         agreement = diff <= t.interior_max_abs
                         ? fmt::format(" and agree with each other (max difference {})", number(diff))
                         : fmt::format(" (and differ from each other: max difference {})", number(diff));
-      v = {Attribution::front_end,
-           fmt::format("{} renders on all {} paths ({}) differ from the reference{}; {} pass{}", f.language,
-                       same_language.size(), join_comma(places(same_language, false)), agreement, join_and(others),
-                       others.size() == 1 ? "es" : "")};
+      const std::string on = same_language.size() == 1
+                                 ? fmt::format("{} render on its only path ({}) differs", f.language, where(f))
+                                 : fmt::format("{} renders on all {} paths ({}) differ", f.language,
+                                               same_language.size(), join_comma(places(same_language, false)));
+      v = {Attribution::front_end, fmt::format("{} from the reference{}; {} pass{}", on, agreement, join_and(others),
+                                               others.size() == 1 ? "es" : "")};
       continue;
     }
 

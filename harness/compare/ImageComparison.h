@@ -53,7 +53,7 @@ struct ComparisonThresholds {
 // length, so band / 8 is about a third of a pixel of uniform growth or shrinkage of the
 // outline; the 8 keeps tiny images (16..48 px) clear of pixel-centre sampling noise.
 // Measured (see ImageComparison.cpp) the real differences are 0 between renders and
-// reference and at most 0.7 of the allowance between reference and expected area.
+// reference and at most 0.45 of the allowance between reference and expected area.
 size_t coverage_allowance(size_t silhouette_band_pixels);
 
 struct Comparison {

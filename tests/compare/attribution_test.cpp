@@ -232,6 +232,17 @@ TEST(Attribution, FrontEndRendersThatDisagreeAreStillTheFrontEndButSaySo) {
   EXPECT_NE(v.reason.find("glsl and hlsl pass"), std::string::npos) << v.reason;
 }
 
+TEST(Attribution, OneBackendOnlyStillSeesTheFrontEnd) {
+  // A run filtered to Vulkan: one render per language.
+  const ReferenceImage ref = disc_reference();
+  const Image g = good(), w = wrong();
+  const std::vector<RenderOutcome> rs{{"glsl", "vulkan", "spirv", true, &g}, {"hlsl", "vulkan", "spirv", false, &w}};
+  const auto v = attribute_failures(rs, ref, kThresholds);
+  EXPECT_EQ(v[0].attribution, Attribution::none);
+  EXPECT_EQ(v[1].attribution, Attribution::front_end);
+  EXPECT_EQ(v[1].reason, "hlsl render on its only path (vulkan/spirv) differs from the reference; glsl passes");
+}
+
 TEST(RendersMaxDifference, OverTheReferenceInterior) {
   const ReferenceImage ref = disc_reference();
   const auto classes = classify_pixels(ref);

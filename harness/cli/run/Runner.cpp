@@ -19,6 +19,7 @@
 #include "cli/run/ParameterOverrides.h"
 #include "cli/run/ProgramArtefacts.h"
 #include "cli/run/ReferenceRender.h"
+#include "compare/Attribution.h"
 #include "compare/ImageComparison.h"
 #include "compare/ImageFiles.h"
 #include "compile/Compiler.h"
@@ -27,6 +28,7 @@
 #include "lut/LutTolerance.h"
 #include "scene/CaseFile.h"
 #include "scene/Primitives.h"
+#include "scene/ProjectedArea.h"
 
 namespace shaderbed {
 namespace fs = std::filesystem;
@@ -105,6 +107,7 @@ struct Caches {
   };
   std::map<std::string, Program> programs;                   // case/variant/language
   std::map<std::string, Mesh> meshes;                        // shape/tessellation
+  std::map<std::string, double> areas;                       // shape/tessellation: projected pixels
   std::map<std::string, Result<Texture>> luts;               // case/variant
 };
 
@@ -120,6 +123,13 @@ class GroupRunner {
     const Mesh& mesh = caches_.meshes.at(mesh_key);
     const fs::path dir = o_.out_dir.empty() ? fs::path() : fs::path(o_.out_dir) / c.name / g.variant->name / g.shape;
 
+    if (!caches_.areas.contains(mesh_key)) {
+      const glm::dmat4 clip_from_object = projection_matrix(scene_.camera, double(scene_.width) / scene_.height) *
+                                          view_matrix(scene_.camera) * scene_.world;
+      caches_.areas[mesh_key] = projected_area_pixels(mesh, clip_from_object, scene_.width, scene_.height);
+    }
+    area_ = caches_.areas.at(mesh_key);
+
     const auto t0 = Clock::now();
     const Result<ReferenceImage> reference = render_reference(mesh, scene_, c, g.variant->mode);
     const double reference_ms = ms_since(t0);
@@ -129,6 +139,8 @@ class GroupRunner {
     Result<const Texture*> lut = prepare_lut(g, mesh, thresholds);
 
     std::vector<CellResult> results;
+    std::vector<Image> images;   // kept for attribution, one per cell that rendered
+    std::vector<size_t> rendered_cells;
     for (const PlannedCell& cell : g.cells) {
       CellResult r{.case_name = c.name, .variant = g.variant->name, .language = to_string(cell.language),
                    .backend = cell.backend->name, .path = to_string(cell.path), .shape = g.shape};
@@ -137,12 +149,17 @@ class GroupRunner {
       r.lut_bound = thresholds.lut_bound;
       r.lut_derivation = thresholds.lut_derivation;
       r.time_ms["reference"] = reference_ms;
-      if (auto ok = run_cell(g, cell, mesh, reference, lut, dir, r); !ok) {
+      Image image;
+      if (auto ok = run_cell(g, cell, mesh, reference, lut, dir, r, image); !ok) {
         r.status = "error";
         r.message = ok.error().to_string();
+      } else {
+        images.push_back(std::move(image));
+        rendered_cells.push_back(results.size());
       }
       results.push_back(std::move(r));
     }
+    if (reference) attribute(results, images, rendered_cells, *reference, thresholds);
     return results;
   }
 
@@ -151,6 +168,22 @@ class GroupRunner {
     double interior, silhouette, lut_bound;
     std::string lut_derivation;
   };
+
+  // Which stage the failures of this group point at, from how its renders agree.
+  void attribute(std::vector<CellResult>& results, const std::vector<Image>& images,
+                 const std::vector<size_t>& rendered, const ReferenceImage& reference, const Thresholds& t) {
+    std::vector<RenderOutcome> outcomes;
+    for (size_t i = 0; i < rendered.size(); ++i) {
+      const CellResult& r = results[rendered[i]];
+      outcomes.push_back({r.language, r.backend, r.path, r.status == "pass", &images[i]});
+    }
+    const std::vector<Verdict> verdicts = attribute_failures(outcomes, reference, {t.interior, t.silhouette}, area_);
+    for (size_t i = 0; i < rendered.size() && i < verdicts.size(); ++i) {
+      CellResult& r = results[rendered[i]];
+      r.attribution = to_string(verdicts[i].attribution);
+      r.attribution_reason = verdicts[i].reason;
+    }
+  }
 
   void write_reference(const ReferenceImage& ref, const fs::path& dir) {
     Image preview(ref.width, ref.height);
@@ -198,7 +231,7 @@ class GroupRunner {
 
   Result<void> run_cell(const CellGroup& g, const PlannedCell& cell, const Mesh& mesh,
                         const Result<ReferenceImage>& reference, const Result<const Texture*>& lut, const fs::path& dir,
-                        CellResult& r) {
+                        CellResult& r, Image& image) {
     const Case& c = *g.c;
     Caches::Program& compiled = program_for(g, cell.language);
     if (!compiled.program) return std::unexpected(compiled.program.error());
@@ -225,21 +258,13 @@ class GroupRunner {
     r.time_ms["readback"] = rendered->timings.readback_ms;
 
     const auto t0 = Clock::now();
-    const Comparison cmp = compare_images(rendered->image, *reference, {r.interior_threshold, r.silhouette_threshold});
+    const Comparison cmp =
+        compare_images(rendered->image, *reference, {r.interior_threshold, r.silhouette_threshold}, area_);
     r.time_ms["compare"] = ms_since(t0);
-    r.metrics.max_abs = cmp.interior.max_abs;
-    r.metrics.rmse = cmp.interior.rmse;
-    r.metrics.psnr = cmp.psnr;
-    r.metrics.bad_pixels = cmp.interior.bad_pixels + cmp.silhouette.bad_pixels;
-    r.metrics.nonfinite = cmp.nonfinite;
-    r.metrics.coverage_mismatch = cmp.coverage_mismatch;
-    r.metrics.silhouette_max_abs = cmp.silhouette.max_abs;
-    r.metrics.interior_pixels = cmp.interior.pixels;
-    r.metrics.silhouette_pixels = cmp.silhouette.pixels;
-    r.metrics.min_passing_interior = cmp.interior.max_abs;
-    r.metrics.min_passing_silhouette = cmp.silhouette.max_abs;
+    r.metrics = cell_metrics(cmp);
     r.status = cmp.pass ? "pass" : "fail";
     r.message = cmp.reason;
+    image = std::move(rendered->image);
 
     if (dir.empty()) return {};
     const std::string stem = fmt::format("{}-{}-{}", r.language, r.backend, r.path);
@@ -248,8 +273,8 @@ class GroupRunner {
     r.artefacts.error_exr = (dir / (stem + ".error.exr")).string();
     r.artefacts.error_png = (dir / (stem + ".error.png")).string();
     r.artefacts.reference_png = (dir / "reference.png").string();
-    for (auto written : {write_exr(r.artefacts.render_exr, scene_.width, scene_.height, rendered->image.rgba),
-                         write_png(r.artefacts.render_png, rendered->image),
+    for (auto written : {write_exr(r.artefacts.render_exr, scene_.width, scene_.height, image.rgba),
+                         write_png(r.artefacts.render_png, image),
                          write_exr(r.artefacts.error_exr, scene_.width, scene_.height, cmp.error.rgba),
                          // Error heat map: the interior tolerance shows as mid grey.
                          write_png(r.artefacts.error_png, cmp.error, float(0.5 / std::max(r.interior_threshold, 1e-12)))})
@@ -260,6 +285,7 @@ class GroupRunner {
   const RunOptions& o_;
   const SceneSetup& scene_;
   Caches& caches_;
+  double area_ = 0;   // the current group's expected projected area, in pixels
 };
 
 }  // namespace
