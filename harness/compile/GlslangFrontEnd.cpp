@@ -1,3 +1,4 @@
+#include "compile/HlslGuards.h"
 #include "compile/GlslangFrontEnd.h"
 
 #include <mutex>
@@ -65,6 +66,8 @@ Result<std::vector<uint32_t>> glslang_to_spirv(Language language, const ShaderSo
     if (!prepared) return std::unexpected(prepared.error());
     cg = std::move(*prepared);
   }
+  if (language == Language::hlsl)
+    if (auto ok = reject_glslang_crashers(source); !ok) return std::unexpected(ok.error());
   const std::string& source_text = cg ? cg->text : source.text;
 
   glslang::TShader shader(stage);

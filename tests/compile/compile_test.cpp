@@ -125,6 +125,22 @@ TEST(Compile, OptimizerShrinksAModule) {
   EXPECT_NE(disassemble(*optimized).find("OpEntryPoint"), std::string::npos);
 }
 
+TEST(Compile, HlslNoiseIsAnErrorNotACrash) {
+  auto m = compile_stage(Language::hlsl,
+                         source(Stage::fragment,
+                                "// noise(x) in a comment is fine\n"
+                                "float noise_scale : register(c4);\n"
+                                "float4 main(float3 p : TEXCOORD0) : COLOR0\n"
+                                "{\n"
+                                "    return float4(noise(p) * noise_scale, 0, 0, 1);\n"
+                                "}\n",
+                                "noisy.hlsl"),
+                         Target::vulkan);
+  ASSERT_FALSE(m);
+  EXPECT_EQ(m.error().line, 5);
+  EXPECT_NE(m.error().message.find("noise"), std::string::npos);
+}
+
 TEST(Compile, MissingFileIsAnErrorWithThePath) {
   auto src = load_shader_source(Stage::vertex, "/nonexistent/shader.vert");
   ASSERT_FALSE(src);
