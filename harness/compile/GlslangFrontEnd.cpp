@@ -1,4 +1,3 @@
-#include "compile/HlslGuards.h"
 #include "compile/GlslangFrontEnd.h"
 
 #include <mutex>
@@ -11,6 +10,7 @@
 #include <glslang/SPIRV/GlslangToSpv.h>
 
 #include "compile/CgFrontEnd.h"
+#include "compile/HlslGuards.h"
 
 namespace shaderbed {
 namespace {
