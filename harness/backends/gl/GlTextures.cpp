@@ -4,6 +4,7 @@
 #include <map>
 #include <string>
 
+#include "backends/TextureShape.h"
 #include "backends/gl/GlError.h"
 
 namespace shaderbed::gl {
@@ -11,15 +12,6 @@ namespace {
 
 std::string where(const SamplerBinding& sampler) {
   return "sampler '" + sampler.name + "' (texture unit " + std::to_string(sampler.binding) + ")";
-}
-
-std::string dims(uint32_t dimensions) { return std::to_string(dimensions) + "D"; }
-
-std::string extent_text(const Texture& t) {
-  std::string text = std::to_string(t.width);
-  if (t.dimensions >= 2) text += "x" + std::to_string(t.height);
-  if (t.dimensions >= 3) text += "x" + std::to_string(t.depth);
-  return text;
 }
 
 GLenum texture_target(uint32_t dimensions) {
@@ -30,28 +22,10 @@ GLenum texture_target(uint32_t dimensions) {
 // w*h*d, and within GL's texture size limits.
 Result<void> check_texture(const GlFunctions& gl, const SamplerBinding& sampler, const Texture& t) {
   const std::string what = where(sampler) + ": texture '" + t.name + "'";
-  if (t.dimensions < 1 || t.dimensions > 3)
-    return std::unexpected(gl_error(what + " claims " + std::to_string(t.dimensions) +
-                                    " dimensions; textures are 1D, 2D or 3D"));
-  if (t.dimensions != sampler.dimensions)
-    return std::unexpected(gl_error(what + " is " + dims(t.dimensions) + " but the shader samples it as " +
-                                    dims(sampler.dimensions)));
-  if (t.width == 0 || t.height == 0 || t.depth == 0)
-    return std::unexpected(gl_error(what + " has a zero extent (" + std::to_string(t.width) + "x" +
-                                    std::to_string(t.height) + "x" + std::to_string(t.depth) + ")"));
-  if ((t.dimensions < 2 && t.height != 1) || (t.dimensions < 3 && t.depth != 1))
-    return std::unexpected(gl_error(what + " is " + dims(t.dimensions) + " but has extent " + std::to_string(t.width) +
-                                    "x" + std::to_string(t.height) + "x" + std::to_string(t.depth) +
-                                    " (unused extents must be 1)"));
-  const uint64_t texels = uint64_t(t.width) * t.height * t.depth;
-  if (t.texels.size() != texels)
-    return std::unexpected(gl_error(what + " (" + extent_text(t) + ") needs " + std::to_string(texels) +
-                                    " texels but has " + std::to_string(t.texels.size())));
   GLint max_extent = 0;
   gl.GetIntegerv(t.dimensions == 3 ? GL_MAX_3D_TEXTURE_SIZE : GL_MAX_TEXTURE_SIZE, &max_extent);
-  if (std::max({t.width, t.height, t.depth}) > uint32_t(max_extent))
-    return std::unexpected(gl_error(what + " (" + extent_text(t) + ") exceeds GL's " + dims(t.dimensions) +
-                                    " texture limit of " + std::to_string(max_extent)));
+  if (std::string problem = texture_mismatch(what, sampler, t, uint32_t(max_extent), "GL's texture"); !problem.empty())
+    return std::unexpected(gl_error(problem));
   return {};
 }
 
@@ -62,7 +36,7 @@ Result<void> check_linear_filtering(const GlFunctions& gl, uint32_t dimensions) 
   gl.GetInternalformativ(texture_target(dimensions), GL_R32F, GL_FILTER, 1, &support);
   drain_gl_errors(gl);  // a query this context cannot answer leaves support at GL_NONE
   if (support == GL_FULL_SUPPORT) return {};
-  return std::unexpected(gl_error("this OpenGL cannot filter " + dims(dimensions) +
+  return std::unexpected(gl_error("this OpenGL cannot filter " + dimensions_text(dimensions) +
                                   " GL_R32F textures linearly (GL_FILTER support " + std::to_string(support) + ")"));
 }
 
@@ -99,7 +73,7 @@ Result<GlTexture> upload(const GlFunctions& gl, const Texture& t) {
   gl.TextureParameteri(name, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
   gl.TextureParameteri(name, GL_TEXTURE_BASE_LEVEL, 0);
   gl.TextureParameteri(name, GL_TEXTURE_MAX_LEVEL, 0);
-  if (auto ok = check_gl(gl, "uploading " + dims(t.dimensions) + " texture '" + t.name + "' (" + extent_text(t) + ")");
+  if (auto ok = check_gl(gl, "uploading " + dimensions_text(t.dimensions) + " texture '" + t.name + "' (" + extent_text(t) + ")");
       !ok)
     return std::unexpected(ok.error());
   return texture;

@@ -5,6 +5,7 @@
 #include <string>
 #include <utility>
 
+#include "backends/TextureShape.h"
 #include "backends/vulkan/VulkanResult.h"
 
 namespace shaderbed::vulkan {
@@ -15,43 +16,16 @@ std::string where(const SamplerBinding& sampler) {
          std::to_string(sampler.binding) + ")";
 }
 
-std::string dims(uint32_t dimensions) { return std::to_string(dimensions) + "D"; }
-
-std::string extent_text(const Texture& t) {
-  std::string text = std::to_string(t.width);
-  if (t.dimensions >= 2) text += "x" + std::to_string(t.height);
-  if (t.dimensions >= 3) text += "x" + std::to_string(t.depth);
-  return text;
-}
-
 // The texture fits the sampler: same dimensionality, unused extents 1, texel count
 // w*h*d, and within the device's image limits.
 Result<void> check_texture(const VulkanDevice& device, const SamplerBinding& sampler, const Texture& t) {
   const std::string what = where(sampler) + ": texture '" + t.name + "'";
-  if (t.dimensions < 1 || t.dimensions > 3)
-    return std::unexpected(backend_error(what + " claims " + std::to_string(t.dimensions) +
-                                         " dimensions; textures are 1D, 2D or 3D"));
-  if (t.dimensions != sampler.dimensions)
-    return std::unexpected(backend_error(what + " is " + dims(t.dimensions) + " but the shader samples it as " +
-                                         dims(sampler.dimensions)));
-  if (t.width == 0 || t.height == 0 || t.depth == 0)
-    return std::unexpected(backend_error(what + " has a zero extent (" + std::to_string(t.width) + "x" +
-                                         std::to_string(t.height) + "x" + std::to_string(t.depth) + ")"));
-  if ((t.dimensions < 2 && t.height != 1) || (t.dimensions < 3 && t.depth != 1))
-    return std::unexpected(backend_error(what + " is " + dims(t.dimensions) + " but has extent " +
-                                         std::to_string(t.width) + "x" + std::to_string(t.height) + "x" +
-                                         std::to_string(t.depth) + " (unused extents must be 1)"));
-  const uint64_t texels = uint64_t(t.width) * t.height * t.depth;
-  if (t.texels.size() != texels)
-    return std::unexpected(backend_error(what + " (" + extent_text(t) + ") needs " + std::to_string(texels) +
-                                         " texels but has " + std::to_string(t.texels.size())));
   const VkPhysicalDeviceLimits& limits = device.properties().limits;
   const uint32_t max_extent = t.dimensions == 1   ? limits.maxImageDimension1D
                               : t.dimensions == 2 ? limits.maxImageDimension2D
                                                   : limits.maxImageDimension3D;
-  if (std::max({t.width, t.height, t.depth}) > max_extent)
-    return std::unexpected(backend_error(what + " (" + extent_text(t) + ") exceeds the device's " +
-                                         dims(t.dimensions) + " image limit of " + std::to_string(max_extent)));
+  if (std::string problem = texture_mismatch(what, sampler, t, max_extent, "the device's image"); !problem.empty())
+    return std::unexpected(backend_error(problem));
   return {};
 }
 
@@ -126,8 +100,8 @@ Result<std::vector<SamplerBinding>> program_samplers(const CompiledProgram& prog
         return std::unexpected(backend_error("the vertex and fragment shaders declare different samplers at set " +
                                              std::to_string(sampler.set) + ", binding " +
                                              std::to_string(sampler.binding) + " ('" + it->second.name + "' " +
-                                             dims(it->second.dimensions) + " and '" + sampler.name + "' " +
-                                             dims(sampler.dimensions) + ")"));
+                                             dimensions_text(it->second.dimensions) + " and '" + sampler.name + "' " +
+                                             dimensions_text(sampler.dimensions) + ")"));
     }
   }
   std::vector<SamplerBinding> samplers;
