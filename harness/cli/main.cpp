@@ -8,7 +8,8 @@ int main(int argc, char** argv) {
                "double-precision CPU reference."};
   app.require_subcommand(1);
   const shaderbed::Command commands[] = {shaderbed::add_run_command(app), shaderbed::add_eval_command(app),
-                                          shaderbed::add_merge_command(app)};
+                                          shaderbed::add_merge_command(app),
+                                          shaderbed::add_stats_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

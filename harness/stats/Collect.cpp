@@ -1,0 +1,155 @@
+#include "stats/Collect.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <future>
+#include <set>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "compile/SpirvTools.h"
+#include "compile/ToolVersions.h"
+#include "scene/CaseFile.h"
+#include "stats/OpcodeClass.h"
+#include "stats/nir/NirDump.h"
+
+namespace shaderbed::stats {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool wanted(const std::vector<std::string>& filter, const std::string& name) {
+  return filter.empty() || std::find(filter.begin(), filter.end(), name) != filter.end();
+}
+
+Result<void> check_names(const std::vector<std::string>& given, const std::set<std::string>& known,
+                         const char* what) {
+  for (const std::string& g : given)
+    if (!known.contains(g)) return fail("options", fmt::format("unknown {} '{}'", what, g));
+  return {};
+}
+
+int count_lines(const std::string& text) {
+  int n = int(std::count(text.begin(), text.end(), '\n'));
+  return n + (!text.empty() && text.back() != '\n' ? 1 : 0);
+}
+
+}  // namespace
+
+Result<StatsEntry> stage_stats(const CompiledProgram& program, Stage stage) {
+  const ShaderModule& m = stage == Stage::vertex ? program.vertex : program.fragment;
+  StatsEntry e;
+  e.language = to_string(program.language);
+  e.stage = to_string(stage);
+  auto plain = count_spirv(m.spirv);
+  if (!plain) return std::unexpected(plain.error());
+  e.spirv = *plain;
+  for (auto [level, out] : {std::pair{OptimizeLevel::performance, &e.spirv_opt}, {OptimizeLevel::size, &e.spirv_os}}) {
+    auto optimized = optimize_spirv(m.spirv, Target::vulkan, level);
+    if (!optimized) return std::unexpected(optimized.error());
+    auto counts = count_spirv(*optimized);
+    if (!counts) return std::unexpected(counts.error());
+    *out = *counts;
+  }
+  e.glsl_lines = count_lines(stage == Stage::vertex ? program.vertex_cross_glsl : program.fragment_cross_glsl);
+  return e;
+}
+
+// A compiled program whose two entries (vertex at `first`, fragment next) await NIR counts.
+struct PendingNir {
+  size_t first;
+  CompiledProgram program;
+};
+
+// Each reading is a child process that mostly waits on LLVM: run as many at once as
+// there are cores. A backend whose method gives nothing leaves its note, not zeros.
+void read_driver_counts(const std::vector<PendingNir>& programs, StatsReport& report) {
+  struct Job {
+    const PendingNir* pending;
+    NirBackend backend;
+  };
+  std::vector<Job> jobs;
+  for (const PendingNir& p : programs)
+    for (NirBackend b : {NirBackend::vulkan, NirBackend::gl}) jobs.push_back({&p, b});
+  const size_t width = std::max(2u, std::thread::hardware_concurrency());
+  for (size_t start = 0; start < jobs.size(); start += width) {
+    std::vector<std::future<Result<NirProgramCounts>>> running;
+    for (size_t j = start; j < std::min(jobs.size(), start + width); ++j)
+      running.push_back(std::async(std::launch::async, [&, j] {
+        return nir_counts(jobs[j].pending->program, NirRequest{.backend = jobs[j].backend});
+      }));
+    for (size_t j = start; j < std::min(jobs.size(), start + width); ++j) {
+      auto counts = running[j - start].get();
+      for (Stage stage : {Stage::vertex, Stage::fragment}) {
+        StatsEntry& e = report.entries[jobs[j].pending->first + (stage == Stage::fragment ? 1 : 0)];
+        if (!e.nir) e.nir = NirStats{};
+        std::optional<NirCounts>& slot = jobs[j].backend == NirBackend::vulkan ? e.nir->vulkan : e.nir->gl;
+        if (counts) {
+          const auto& c = (*counts)[stage];
+          slot = NirCounts{c.alu, c.tex, c.control};
+        } else {
+          e.nir->note += (e.nir->note.empty() ? "" : "; ") + std::string(to_string(jobs[j].backend)) + ": " +
+                         counts.error().message;
+        }
+      }
+    }
+  }
+}
+
+Result<StatsReport> collect_stats(const StatsOptions& o) {
+  auto files = list_case_files(o.cases_dir);
+  if (!files) return std::unexpected(files.error());
+  std::set<std::string> case_names;
+  for (const std::string& f : *files) case_names.insert(fs::path(f).stem().string());
+  if (auto ok = check_names(o.cases, case_names, "case"); !ok) return std::unexpected(ok.error());
+  if (auto ok = check_names(o.languages, {"glsl", "hlsl", "cg"}, "language"); !ok) return std::unexpected(ok.error());
+
+  StatsReport report;
+  const CompilerVersions v = compiler_versions();
+  report.tool = {{"glslang", v.glslang}, {"spirv_tools", v.spirv_tools}, {"spirv_cross", v.spirv_cross},
+                 {"spirv_grammar", grammar_version()}};
+  std::set<std::string> variant_names;
+  std::vector<PendingNir> programs;
+  for (const std::string& f : *files) {
+    if (!wanted(o.cases, fs::path(f).stem().string())) continue;
+    auto c = load_case(f);
+    if (!c) return std::unexpected(c.error());
+    for (const Variant& variant : c->variants) {
+      variant_names.insert(variant.name);
+      if (!wanted(o.variants, variant.name)) continue;
+      for (Language language : {Language::hlsl, Language::cg, Language::glsl}) {
+        if (!wanted(o.languages, to_string(language)) || !variant.shaders.contains(language)) continue;
+        const ShaderFiles& files_ = variant.shaders.at(language);
+        Result<CompiledProgram> program = fail("compile", "not compiled");
+        auto vs = load_shader_source(Stage::vertex, files_.vertex);
+        auto fs_ = load_shader_source(Stage::fragment, files_.fragment);
+        if (!vs) program = std::unexpected(vs.error());
+        else if (!fs_) program = std::unexpected(fs_.error());
+        else program = compile_program(ProgramSource{language, std::move(*vs), std::move(*fs_)});
+        for (Stage stage : {Stage::vertex, Stage::fragment}) {
+          StatsEntry e;
+          if (program) {
+            auto s = stage_stats(*program, stage);
+            if (s) e = std::move(*s);
+            else e.error = s.error().to_string();
+          } else {
+            e.error = program.error().to_string();
+          }
+          e.case_name = c->name;
+          e.variant = variant.name;
+          e.language = to_string(language);
+          e.stage = to_string(stage);
+          e.book = book_count(e.case_name, e.variant, e.stage);
+          report.entries.push_back(std::move(e));
+        }
+        if (program && o.nir) programs.push_back({report.entries.size() - 2, std::move(*program)});
+      }
+    }
+  }
+  read_driver_counts(programs, report);
+  if (auto ok = check_names(o.variants, variant_names, "variant"); !ok) return std::unexpected(ok.error());
+  return report;
+}
+
+}  // namespace shaderbed::stats

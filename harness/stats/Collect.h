@@ -1,0 +1,25 @@
+#pragma once
+// Compiles every selected case x variant x language and counts both stages.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "compile/Compiler.h"
+#include "stats/StatsReport.h"
+
+namespace shaderbed::stats {
+
+struct StatsOptions {
+  std::string cases_dir;
+  std::vector<std::string> cases, variants, languages;   // empty = all
+  bool nir = true;   // also read the driver's NIR (one child process per program and backend)
+};
+
+// Counts of one compiled program's two stages (Vulkan-target SPIR-V, as compiled, -O, -Os).
+Result<StatsEntry> stage_stats(const CompiledProgram& program, Stage stage);
+
+// Every entry; a shader that does not compile is an entry with `error` set. Unknown names
+// in the filters are an Error.
+Result<StatsReport> collect_stats(const StatsOptions& options);
+
+}  // namespace shaderbed::stats

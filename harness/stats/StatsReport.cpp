@@ -1,0 +1,236 @@
+#include "stats/StatsReport.h"
+
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+namespace shaderbed::stats {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+json counts_json(const ClassCounts& c) {
+  json j = {{"total", c.total},         {"arithmetic", c.arithmetic}, {"extended", c.extended},
+            {"texture", c.texture},     {"control", c.control},       {"memory", c.memory},
+            {"conversion", c.conversion}, {"other", c.other}};
+  j["extended_calls"] = json::object();
+  for (const auto& [name, n] : c.extended_calls) j["extended_calls"][name] = n;
+  return j;
+}
+
+ClassCounts counts_from(const json& j) {
+  ClassCounts c;
+  if (!j.is_object()) return c;
+  c.total = j.value("total", 0);
+  c.arithmetic = j.value("arithmetic", 0);
+  c.extended = j.value("extended", 0);
+  c.texture = j.value("texture", 0);
+  c.control = j.value("control", 0);
+  c.memory = j.value("memory", 0);
+  c.conversion = j.value("conversion", 0);
+  c.other = j.value("other", 0);
+  if (j.contains("extended_calls") && j["extended_calls"].is_object())
+    for (const auto& [name, n] : j["extended_calls"].items()) c.extended_calls[name] = n.get<int>();
+  return c;
+}
+
+json nir_counts_json(const std::optional<NirCounts>& n) {
+  if (!n) return nullptr;
+  return {{"alu", n->alu}, {"tex", n->tex}, {"control", n->control}};
+}
+
+std::optional<NirCounts> nir_counts_from(const json& j) {
+  if (!j.is_object()) return std::nullopt;
+  return NirCounts{j.value("alu", 0), j.value("tex", 0), j.value("control", 0)};
+}
+
+std::string csv_field(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string out = "\"";
+  for (char ch : s) out += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+  return out + "\"";
+}
+
+}  // namespace
+
+std::string to_json(const StatsReport& report) {
+  json j;
+  j["tool"] = json::object();
+  for (const auto& [k, v] : report.tool) j["tool"][k] = v;
+  j["entries"] = json::array();
+  for (const StatsEntry& e : report.entries) {
+    json x = {{"case", e.case_name}, {"variant", e.variant}, {"language", e.language}, {"stage", e.stage}};
+    x["spirv"] = counts_json(e.spirv);
+    x["spirv_opt"] = counts_json(e.spirv_opt);
+    x["spirv_os"] = counts_json(e.spirv_os);
+    x["glsl_lines"] = e.glsl_lines;
+    if (e.nir) {
+      x["nir"] = {{"vulkan", nir_counts_json(e.nir->vulkan)}, {"gl", nir_counts_json(e.nir->gl)}};
+      if (!e.nir->note.empty()) x["nir"]["note"] = e.nir->note;
+    } else {
+      x["nir"] = nullptr;
+    }
+    x["book"] = e.book ? json(*e.book) : json(nullptr);
+    if (!e.error.empty()) x["error"] = e.error;
+    j["entries"].push_back(std::move(x));
+  }
+  return j.dump(2) + "\n";
+}
+
+Result<StatsReport> from_json(const std::string& text) {
+  json j = json::parse(text, nullptr, false);
+  if (j.is_discarded() || !j.is_object() || !j.contains("entries") || !j["entries"].is_array())
+    return fail("stats", "not a `shaderbed stats --json` file (no \"entries\" array)");
+  StatsReport r;
+  if (j.contains("tool") && j["tool"].is_object())
+    for (const auto& [k, v] : j["tool"].items())
+      if (v.is_string()) r.tool[k] = v.get<std::string>();
+  try {
+    for (const json& x : j["entries"]) {
+      StatsEntry e;
+      e.case_name = x.at("case").get<std::string>();
+      e.variant = x.at("variant").get<std::string>();
+      e.language = x.at("language").get<std::string>();
+      e.stage = x.at("stage").get<std::string>();
+      e.spirv = counts_from(x.value("spirv", json()));
+      e.spirv_opt = counts_from(x.value("spirv_opt", json()));
+      e.spirv_os = counts_from(x.value("spirv_os", json()));
+      e.glsl_lines = x.value("glsl_lines", 0);
+      if (x.contains("nir") && x["nir"].is_object()) {
+        NirStats n;
+        n.vulkan = nir_counts_from(x["nir"].value("vulkan", json()));
+        n.gl = nir_counts_from(x["nir"].value("gl", json()));
+        n.note = x["nir"].value("note", "");
+        e.nir = n;
+      }
+      if (x.contains("book") && x["book"].is_number_integer()) e.book = x["book"].get<int>();
+      e.error = x.value("error", "");
+      r.entries.push_back(std::move(e));
+    }
+  } catch (const json::exception& ex) {
+    return fail("stats", std::string("bad entry: ") + ex.what());
+  }
+  return r;
+}
+
+Result<StatsReport> read_stats_json(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) return std::unexpected(Error{.message = "cannot read stats JSON", .file = path, .stage = "stats"});
+  std::stringstream ss;
+  ss << in.rdbuf();
+  auto r = from_json(ss.str());
+  if (!r) return std::unexpected(std::move(r.error()).in_file(path));
+  return r;
+}
+
+Result<void> write_text_file(const std::string& path, const std::string& text) {
+  std::ofstream out(path);
+  if (!out || !(out << text))
+    return std::unexpected(Error{.message = "cannot write file", .file = path, .stage = "stats"});
+  return {};
+}
+
+std::string to_csv(const StatsReport& report) {
+  std::string out = "case,variant,language,stage";
+  for (const char* form : {"spirv", "spirv_opt", "spirv_os"})
+    for (const char* cls : {"total", "arithmetic", "extended", "texture", "control", "memory", "conversion", "other"})
+      out += fmt::format(",{}_{}", form, cls);
+  out += ",extended_calls,glsl_lines,nir_vulkan_alu,nir_vulkan_tex,nir_vulkan_control,nir_gl_alu,nir_gl_tex,"
+         "nir_gl_control,book,error\n";
+  for (const StatsEntry& e : report.entries) {
+    out += fmt::format("{},{},{},{}", csv_field(e.case_name), csv_field(e.variant), e.language, e.stage);
+    for (const ClassCounts* c : {&e.spirv, &e.spirv_opt, &e.spirv_os})
+      out += fmt::format(",{},{},{},{},{},{},{},{}", c->total, c->arithmetic, c->extended, c->texture, c->control,
+                         c->memory, c->conversion, c->other);
+    std::string calls;
+    for (const auto& [name, n] : e.spirv_opt.extended_calls) calls += fmt::format("{}{}:{}", calls.empty() ? "" : " ", name, n);
+    out += "," + csv_field(calls) + fmt::format(",{}", e.glsl_lines);
+    auto nir = [&](const std::optional<NirCounts>& n) {
+      return n ? fmt::format(",{},{},{}", n->alu, n->tex, n->control) : std::string(",,,");
+    };
+    out += nir(e.nir ? e.nir->vulkan : std::nullopt) + nir(e.nir ? e.nir->gl : std::nullopt);
+    out += "," + (e.book ? std::to_string(*e.book) : std::string()) + "," + csv_field(e.error) + "\n";
+  }
+  return out;
+}
+
+std::string format_table(const StatsReport& report) {
+  // Languages present, in a fixed order; rows keyed by case/variant/stage in entry order.
+  std::vector<std::string> languages;
+  for (const char* l : {"hlsl", "cg", "glsl"})
+    for (const StatsEntry& e : report.entries)
+      if (e.language == l) {
+        languages.push_back(l);
+        break;
+      }
+  std::vector<std::string> rows;
+  std::map<std::string, std::map<std::string, const StatsEntry*>> by_row;
+  for (const StatsEntry& e : report.entries) {
+    std::string row = e.case_name + "/" + e.variant + "/" + e.stage;
+    if (!by_row.contains(row)) rows.push_back(row);
+    by_row[row][e.language] = &e;
+  }
+  size_t w = 10;
+  for (const std::string& r : rows) w = std::max(w, r.size());
+
+  // Per language: "tot  ar ex tx cf mem cv ot | -O tot ar | -Os tot | glsl"
+  const std::string block_head = "  tot  ar  ex  tx  cf mem  cv  ot   -O  ar  ex  -Os  gl  vk  gl";
+  constexpr int kBlock = 63;
+  auto nir_alu = [](const std::optional<NirCounts>& n) { return n ? std::to_string(n->alu) : std::string("-"); };
+  auto block = [&](const StatsEntry* e) -> std::string {
+    if (!e) return fmt::format("{:>{}}", "-", kBlock);
+    if (!e->error.empty()) return fmt::format("{:>{}}", "compile error", kBlock);
+    const ClassCounts& c = e->spirv;
+    return fmt::format("{:>5}{:>4}{:>4}{:>4}{:>4}{:>4}{:>4}{:>4}{:>5}{:>4}{:>4}{:>5}{:>4}{:>4}{:>4}", c.total,
+                       c.arithmetic, c.extended, c.texture, c.control, c.memory, c.conversion, c.other,
+                       e->spirv_opt.total, e->spirv_opt.arithmetic, e->spirv_opt.extended, e->spirv_os.total,
+                       e->glsl_lines, e->nir ? nir_alu(e->nir->vulkan) : "-", e->nir ? nir_alu(e->nir->gl) : "-");
+  };
+  std::string out;
+  out += fmt::format("{:<{}}", "", w);
+  for (const std::string& l : languages) out += fmt::format(" |{:^{}}", l, kBlock);
+  out += " | book\n";
+  out += fmt::format("{:<{}}", "case/variant/stage", w);
+  for (size_t i = 0; i < languages.size(); ++i) out += " |" + block_head;
+  out += " | DX9\n";
+  std::string last_case;
+  for (const std::string& r : rows) {
+    const auto& cells = by_row[r];
+    const StatsEntry* any = cells.begin()->second;
+    if (!last_case.empty() && any->case_name != last_case) out += "\n";
+    last_case = any->case_name;
+    out += fmt::format("{:<{}}", r, w);
+    for (const std::string& l : languages) {
+      auto it = cells.find(l);
+      out += " |" + block(it == cells.end() ? nullptr : it->second);
+    }
+    std::string book;
+    if (any->book) book = fmt::format("{} {}", *any->book, any->stage == "vertex" ? "vs_1_1" : "ps_2_0");
+    out += " | " + book + "\n";
+  }
+  // The GLSL.std.450 calls after -O, per shader, where the languages differ is easy to spot.
+  out += "\nGLSL.std.450 calls after -O (per language):\n";
+  for (const std::string& r : rows) {
+    std::string line;
+    for (const std::string& l : languages) {
+      auto it = by_row[r].find(l);
+      if (it == by_row[r].end() || it->second->spirv_opt.extended_calls.empty()) continue;
+      std::string calls;
+      for (const auto& [name, n] : it->second->spirv_opt.extended_calls)
+        calls += fmt::format("{}{}{}", calls.empty() ? "" : " ", name, n > 1 ? fmt::format("x{}", n) : "");
+      line += fmt::format("  {}: {}", l, calls);
+    }
+    if (!line.empty()) out += fmt::format("{:<{}}{}\n", r, w, line);
+  }
+  out += "\ntot = SPIR-V instructions in function bodies as compiled (Vulkan target); ar arithmetic, ex GLSL.std.450 "
+         "calls, tx texture, cf control flow, mem memory, cv conversion, ot other; -O / -Os: totals after spirv-opt; "
+         "gl: lines of SPIRV-Cross GLSL; vk / gl: NIR ALU instructions Mesa compiled on lavapipe / OSMesa (- when "
+         "not read: see the JSON's nir.note).\nbook: the book's fxc count in DX9 vs_1_1/ps_2_0 instruction slots, a "
+         "different instruction set (for orientation, not comparable one to one).\n";
+  return out;
+}
+
+}  // namespace shaderbed::stats

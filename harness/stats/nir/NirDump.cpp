@@ -1,0 +1,185 @@
+#include "stats/nir/NirDump.h"
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+extern char** environ;
+
+namespace shaderbed {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read_all(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string tail(const std::string& s, size_t n) { return s.size() <= n ? s : "..." + s.substr(s.size() - n); }
+
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    std::string templ = (fs::temp_directory_path() / "shaderbed-nir-XXXXXX").string();
+    if (::mkdtemp(templ.data()) != nullptr) path = templ;
+  }
+  ~TempDir() {
+    std::error_code ec;
+    if (!path.empty()) fs::remove_all(path, ec);
+  }
+};
+
+// Environment of the child: ours minus any Mesa capture settings, plus the method's.
+std::vector<std::string> child_environment(NirMethod method, const fs::path& trace) {
+  std::vector<std::string> env;
+  for (char** e = environ; *e != nullptr; ++e) {
+    const std::string_view v(*e);
+    if (v.starts_with("GALLIUM_TRACE") || v.starts_with("MESA_GLSL=") || v.starts_with("MESA_SHADER_CACHE") ||
+        v.starts_with("NIR_DEBUG="))
+      continue;
+    env.emplace_back(v);
+  }
+  env.emplace_back("MESA_SHADER_CACHE_DISABLE=true");
+  if (method == NirMethod::gallium_trace) {
+    env.emplace_back("GALLIUM_TRACE=" + trace.string());
+    env.emplace_back("GALLIUM_TRACE_NIR=1000000");
+  } else {
+    env.emplace_back("MESA_GLSL=dump");
+  }
+  return env;
+}
+
+const char* language_name(Language l) { return to_string(l); }
+
+}  // namespace
+
+const char* to_string(NirBackend b) { return b == NirBackend::vulkan ? "vulkan" : "gl"; }
+const char* to_string(NirMethod m) {
+  switch (m) {
+    case NirMethod::automatic: return "automatic";
+    case NirMethod::gallium_trace: return "gallium_trace";
+    case NirMethod::glsl_dump: return "glsl_dump";
+  }
+  return "?";
+}
+
+std::string nir_dump_helper() {
+  if (const char* env = std::getenv("SHADERBED_NIR_DUMP"); env != nullptr && *env != '\0') return env;
+#ifdef SHADERBED_NIR_DUMP_BINARY
+  if (fs::exists(SHADERBED_NIR_DUMP_BINARY)) return SHADERBED_NIR_DUMP_BINARY;
+#endif
+  std::error_code ec;
+  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  return ec ? std::string("shaderbed-nir-dump") : (self.parent_path() / "shaderbed-nir-dump").string();
+}
+
+Result<NirProgramCounts> nir_counts(const CompiledProgram& program, const NirRequest& given) {
+  NirRequest request = given;
+  if (request.method == NirMethod::automatic)
+    request.method = request.backend == NirBackend::vulkan ? NirMethod::gallium_trace : NirMethod::glsl_dump;
+  const std::string what = std::string("counts unavailable: ") + to_string(request.method) + " on " +
+                           (request.backend == NirBackend::vulkan ? "lavapipe" : "OSMesa llvmpipe");
+  auto unavailable = [&](const std::string& why) { return fail("nir", what + ": " + why); };
+
+  if (request.backend == NirBackend::vulkan && request.method == NirMethod::glsl_dump)
+    return unavailable("MESA_GLSL=dump is a GL (GLSL compiler) setting; Vulkan has no GLSL linker");
+  if (request.backend == NirBackend::gl && request.method == NirMethod::gallium_trace)
+    return unavailable("with GALLIUM_TRACE set, OSMesa never finishes the draw on Mesa 22.3.6 (measured: the "
+                       "trace stops after context_create and the process hangs); use glsl_dump");
+  if (request.backend == NirBackend::vulkan && request.path != ShaderPath::spirv)
+    return unavailable("Vulkan takes SPIR-V only");
+  for (const ShaderModule* m : {&program.vertex, &program.fragment})
+    if (m->source_file.empty() || !fs::exists(m->source_file))
+      return unavailable("the helper recompiles from source files, and '" + m->source_file + "' is not a readable file");
+
+  TempDir dir;
+  if (dir.path.empty()) return unavailable("cannot create a temporary directory");
+  const fs::path trace = dir.path / "trace.xml", out = dir.path / "stdout.txt", err = dir.path / "stderr.txt";
+
+  const std::string helper = request.helper.empty() ? nir_dump_helper() : request.helper;
+  std::vector<std::string> args = {helper,
+                                   "--backend", to_string(request.backend),
+                                   "--path", to_string(request.path),
+                                   "--lang", language_name(program.language),
+                                   "--vertex", program.vertex.source_file,
+                                   "--fragment", program.fragment.source_file,
+                                   "--vertex-entry", program.vertex.entry_point,
+                                   "--fragment-entry", program.fragment.entry_point};
+  std::vector<std::string> env = child_environment(request.method, trace);
+  std::vector<char*> argv, envp;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  for (auto& e : env) envp.push_back(e.data());
+  envp.push_back(nullptr);
+
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  pid_t pid = 0;
+  const int spawned = ::posix_spawn(&pid, helper.c_str(), &actions, nullptr, argv.data(), envp.data());
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0) return unavailable("cannot run the helper '" + helper + "': " + std::strerror(spawned));
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  const std::string stderr_text = read_all(err);
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    return fail("nir", "the NIR helper failed (" +
+                           (WIFEXITED(status) ? "exit " + std::to_string(WEXITSTATUS(status))
+                                              : "signal " + std::to_string(WTERMSIG(status))) +
+                           "): " + tail(read_all(out) + stderr_text, 600));
+
+  std::vector<NirShader> shaders;
+  if (request.method == NirMethod::gallium_trace) {
+    if (!fs::exists(trace)) return unavailable("the driver wrote no trace file (GALLIUM_TRACE not honoured)");
+    shaders = nir_from_gallium_trace(read_all(trace));
+    if (shaders.empty())
+      return unavailable("the trace holds no NIR shaders (GALLIUM_TRACE_NIR not honoured, or the driver was not given NIR)");
+  } else {
+    shaders = nir_from_printed_text(stderr_text);
+    if (shaders.empty())
+      return unavailable("MESA_GLSL=dump printed no NIR on stderr (this Mesa prints " +
+                         std::string(stderr_text.find("GLSL IR for") != std::string::npos ? "GLSL IR only"
+                                                                                          : "nothing recognisable") +
+                         ")");
+  }
+
+  // The program's own shaders are the first vertex and fragment shaders printed: they
+  // are built (linked, pipeline created) before the draw, and the internal shaders a
+  // driver makes while drawing (OSMesa's st prints one for glClear's
+  // gl_CurrentAttribFrag2MESA) come after.
+  NirProgramCounts result;
+  result.method = std::string(to_string(request.method)) + " on " + (request.backend == NirBackend::vulkan ? "lavapipe" : "OSMesa");
+  for (Stage stage : {Stage::vertex, Stage::fragment}) {
+    const NirShader* found = nullptr;
+    for (const NirShader& s : shaders)
+      if (s.stage == stage && found == nullptr) found = &s;
+    if (found == nullptr) return unavailable(std::string("no ") + to_string(stage) + " shader NIR in the capture");
+    auto counts = count_nir(found->text);
+    if (!counts) return unavailable(counts.error().message);
+    (stage == Stage::vertex ? result.vertex : result.fragment) = *counts;
+  }
+  return result;
+}
+
+Result<NirCounts> nir_counts(const CompiledProgram& program, Stage stage, const NirRequest& request) {
+  auto all = nir_counts(program, request);
+  if (!all) return std::unexpected(all.error());
+  return (*all)[stage];
+}
+
+}  // namespace shaderbed

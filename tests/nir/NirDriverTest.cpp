@@ -1,0 +1,95 @@
+// Real driver counts on both backends for tiny GLSL programs: one with arithmetic and no
+// texture, one sampling a texture once. The helper recompiles from files, so the sources
+// are written to a temporary directory.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "compile/Compiler.h"
+#include "stats/nir/NirDump.h"
+
+namespace shaderbed {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* kVertex = R"(#version 450
+layout(location = 0) in vec3 position;
+void main() { gl_Position = vec4(position, 1.0); }
+)";
+
+const char* kMultiply = R"(#version 450
+layout(std140, binding = 1) uniform Values { vec4 a; vec4 b; };
+layout(location = 0) out vec4 colour;
+void main() { colour = a * b; }
+)";
+
+const char* kSample = R"(#version 450
+layout(binding = 2) uniform sampler2D lut;
+layout(location = 0) out vec4 colour;
+void main() { colour = texture(lut, vec2(0.25, 0.75)); }
+)";
+
+Result<CompiledProgram> program_from(const std::string& name, const char* fragment) {
+  // Per process: ctest runs these tests in parallel processes.
+  const fs::path dir = fs::temp_directory_path() / ("shaderbed-nir-test-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const fs::path vs = dir / (name + ".vert"), fs_ = dir / (name + ".frag");
+  std::ofstream(vs) << kVertex;
+  std::ofstream(fs_) << fragment;
+  auto v = load_shader_source(Stage::vertex, vs.string());
+  auto f = load_shader_source(Stage::fragment, fs_.string());
+  if (!v || !f) return std::unexpected(!v ? v.error() : f.error());
+  return compile_program(ProgramSource{Language::glsl, std::move(*v), std::move(*f)});
+}
+
+struct Case {
+  NirBackend backend;
+  ShaderPath path;
+};
+
+class NirDriver : public testing::TestWithParam<Case> {};
+
+TEST_P(NirDriver, MultiplyIsAluWithoutTexture) {
+  auto program = program_from("multiply", kMultiply);
+  ASSERT_TRUE(program) << program.error().to_string();
+  auto counts = nir_counts(*program, NirRequest{.backend = GetParam().backend, .path = GetParam().path});
+  ASSERT_TRUE(counts) << counts.error().to_string();
+  EXPECT_GE(counts->fragment.alu, 1);
+  EXPECT_EQ(counts->fragment.tex, 0);
+  EXPECT_EQ(counts->fragment.control, 0);
+  EXPECT_EQ(counts->vertex.tex, 0);
+}
+
+TEST_P(NirDriver, OneSampleIsOneTextureInstruction) {
+  auto program = program_from("sample", kSample);
+  ASSERT_TRUE(program) << program.error().to_string();
+  auto counts = nir_counts(*program, Stage::fragment, NirRequest{.backend = GetParam().backend, .path = GetParam().path});
+  ASSERT_TRUE(counts) << counts.error().to_string();
+  EXPECT_EQ(counts->tex, 1);
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, NirDriver,
+                         testing::Values(Case{NirBackend::vulkan, ShaderPath::spirv}, Case{NirBackend::gl, ShaderPath::spirv},
+                                         Case{NirBackend::gl, ShaderPath::native_glsl},
+                                         Case{NirBackend::gl, ShaderPath::cross_glsl}),
+                         [](const auto& info) {
+                           return std::string(to_string(info.param.backend)) + "_" + to_string(info.param.path);
+                         });
+
+TEST(NirDriverMethods, AMethodThatDoesNotWorkHereIsAnErrorNamingIt) {
+  auto program = program_from("multiply", kMultiply);
+  ASSERT_TRUE(program);
+  auto vk = nir_counts(*program, NirRequest{.backend = NirBackend::vulkan, .method = NirMethod::glsl_dump});
+  ASSERT_FALSE(vk);
+  EXPECT_NE(vk.error().message.find("counts unavailable: glsl_dump"), std::string::npos) << vk.error().message;
+  auto gl = nir_counts(*program, NirRequest{.backend = NirBackend::gl, .method = NirMethod::gallium_trace});
+  ASSERT_FALSE(gl);
+  EXPECT_NE(gl.error().message.find("counts unavailable: gallium_trace"), std::string::npos) << gl.error().message;
+}
+
+}  // namespace
+}  // namespace shaderbed
