@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <filesystem>
 #include <future>
-#include <set>
 #include <thread>
 
 #include <fmt/format.h>
@@ -11,6 +10,8 @@
 #include "compile/SpirvTools.h"
 #include "compile/ToolVersions.h"
 #include "scene/CaseFile.h"
+#include "scene/CaseProgram.h"
+#include "scene/NameFilter.h"
 #include "stats/OpcodeClass.h"
 #include "stats/nir/NirDump.h"
 
@@ -18,17 +19,6 @@ namespace shaderbed::stats {
 namespace {
 
 namespace fs = std::filesystem;
-
-bool wanted(const std::vector<std::string>& filter, const std::string& name) {
-  return filter.empty() || std::find(filter.begin(), filter.end(), name) != filter.end();
-}
-
-Result<void> check_names(const std::vector<std::string>& given, const std::set<std::string>& known,
-                         const char* what) {
-  for (const std::string& g : given)
-    if (!known.contains(g)) return fail("options", fmt::format("unknown {} '{}'", what, g));
-  return {};
-}
 
 int count_lines(const std::string& text) {
   int n = int(std::count(text.begin(), text.end(), '\n'));
@@ -100,8 +90,8 @@ void read_driver_counts(const std::vector<PendingNir>& programs, StatsReport& re
 Result<StatsReport> collect_stats(const StatsOptions& o) {
   auto files = list_case_files(o.cases_dir);
   if (!files) return std::unexpected(files.error());
-  std::set<std::string> case_names;
-  for (const std::string& f : *files) case_names.insert(fs::path(f).stem().string());
+  std::vector<std::string> case_names;
+  for (const std::string& f : *files) case_names.push_back(fs::path(f).stem().string());
   if (auto ok = check_names(o.cases, case_names, "case"); !ok) return std::unexpected(ok.error());
   if (auto ok = check_names(o.languages, {"glsl", "hlsl", "cg"}, "language"); !ok) return std::unexpected(ok.error());
 
@@ -109,24 +99,20 @@ Result<StatsReport> collect_stats(const StatsOptions& o) {
   const CompilerVersions v = compiler_versions();
   report.tool = {{"glslang", v.glslang}, {"spirv_tools", v.spirv_tools}, {"spirv_cross", v.spirv_cross},
                  {"spirv_grammar", grammar_version()}};
-  std::set<std::string> variant_names;
+  std::vector<std::string> variant_names;
   std::vector<PendingNir> programs;
   for (const std::string& f : *files) {
     if (!wanted(o.cases, fs::path(f).stem().string())) continue;
     auto c = load_case(f);
     if (!c) return std::unexpected(c.error());
     for (const Variant& variant : c->variants) {
-      variant_names.insert(variant.name);
+      if (std::find(variant_names.begin(), variant_names.end(), variant.name) == variant_names.end())
+        variant_names.push_back(variant.name);
       if (!wanted(o.variants, variant.name)) continue;
       for (Language language : {Language::hlsl, Language::cg, Language::glsl}) {
         if (!wanted(o.languages, to_string(language)) || !variant.shaders.contains(language)) continue;
-        const ShaderFiles& files_ = variant.shaders.at(language);
-        Result<CompiledProgram> program = fail("compile", "not compiled");
-        auto vs = load_shader_source(Stage::vertex, files_.vertex);
-        auto fs_ = load_shader_source(Stage::fragment, files_.fragment);
-        if (!vs) program = std::unexpected(vs.error());
-        else if (!fs_) program = std::unexpected(fs_.error());
-        else program = compile_program(ProgramSource{language, std::move(*vs), std::move(*fs_)});
+        auto source = load_case_program(language, variant.shaders.at(language), c->path);
+        Result<CompiledProgram> program = source ? compile_program(*source) : std::unexpected(source.error());
         for (Stage stage : {Stage::vertex, Stage::fragment}) {
           StatsEntry e;
           if (program) {

@@ -5,17 +5,10 @@
 
 #include <fmt/format.h>
 
+#include "scene/NameFilter.h"
 #include "scene/Primitives.h"
 
 namespace shaderbed {
-namespace {
-
-bool wanted(const std::vector<std::string>& filter, const std::string& name) {
-  return filter.empty() || std::find(filter.begin(), filter.end(), name) != filter.end();
-}
-
-}  // namespace
-
 std::vector<CellGroup> plan_cells(const std::vector<Case>& cases, std::vector<BackendSlot>& backends,
                                   const CellFilters& f) {
   std::vector<CellGroup> groups;

@@ -27,6 +27,8 @@
 #include "lut/LookupTexture.h"
 #include "lut/LutTolerance.h"
 #include "scene/CaseFile.h"
+#include "scene/CaseProgram.h"
+#include "scene/NameFilter.h"
 #include "scene/Primitives.h"
 #include "scene/ProjectedArea.h"
 
@@ -36,20 +38,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
-
-bool wanted(const std::vector<std::string>& filter, const std::string& name) {
-  return filter.empty() || std::find(filter.begin(), filter.end(), name) != filter.end();
-}
-
-Result<void> check_names(const std::vector<std::string>& given, const std::vector<std::string>& known, const char* what) {
-  for (const std::string& g : given)
-    if (std::find(known.begin(), known.end(), g) == known.end()) {
-      std::string list;
-      for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
-      return fail("options", fmt::format("unknown {} '{}' (known: {})", what, g, list));
-    }
-  return {};
-}
 
 // Reads the selected case files (only those: one broken case does not block the others),
 // applies --param overrides and checks every name filter.
@@ -78,18 +66,6 @@ Result<std::vector<Case>> select_cases(const RunOptions& o) {
   if (auto ok = check_names(o.shapes, shape_names(), "shape"); !ok) return std::unexpected(ok.error());
   if (o.size < 8 || o.size > 4096) return fail("options", fmt::format("--size {} is outside 8..4096", o.size));
   return cases;
-}
-
-Result<ProgramSource> load_program(Language language, const ShaderFiles& files, const std::string& case_path) {
-  auto missing = [&](const std::string& file) {
-    return std::unexpected(Error{.message = "shader file not found: " + file, .file = case_path, .line = files.line,
-                                 .stage = "case"});
-  };
-  auto vs = load_shader_source(Stage::vertex, files.vertex);
-  if (!vs) return missing(files.vertex);
-  auto fs_ = load_shader_source(Stage::fragment, files.fragment);
-  if (!fs_) return missing(files.fragment);
-  return ProgramSource{language, std::move(*vs), std::move(*fs_)};
 }
 
 std::string llvm_version(const std::string& driver) {
@@ -220,7 +196,7 @@ class GroupRunner {
     if (it != caches_.programs.end()) return it->second;
     Caches::Program entry;
     const auto t0 = Clock::now();
-    auto source = load_program(language, g.variant->shaders.at(language), g.c->path);
+    auto source = load_case_program(language, g.variant->shaders.at(language), g.c->path);
     entry.program = source ? compile_program(*source) : std::unexpected(source.error());
     entry.ms = ms_since(t0);
     if (entry.program && !o_.out_dir.empty())

@@ -1,0 +1,17 @@
+#include "scene/CaseProgram.h"
+
+namespace shaderbed {
+
+Result<ProgramSource> load_case_program(Language language, const ShaderFiles& files, const std::string& case_path) {
+  auto missing = [&](const std::string& file) {
+    return std::unexpected(Error{.message = "shader file not found: " + file, .file = case_path, .line = files.line,
+                                 .stage = "case"});
+  };
+  auto vs = load_shader_source(Stage::vertex, files.vertex);
+  if (!vs) return missing(files.vertex);
+  auto fs = load_shader_source(Stage::fragment, files.fragment);
+  if (!fs) return missing(files.fragment);
+  return ProgramSource{language, std::move(*vs), std::move(*fs)};
+}
+
+}  // namespace shaderbed
