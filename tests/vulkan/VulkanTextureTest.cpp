@@ -11,72 +11,13 @@
 #include <string>
 #include <vector>
 
+#include "TextureProbes.h"
 #include "VulkanTestSupport.h"
 
 namespace shaderbed::vulkan_test {
 namespace {
 
-constexpr int kMaxProbes = 16;
-
-Texture make_texture(std::string name, uint32_t dimensions, uint32_t width, uint32_t height, uint32_t depth,
-                     std::vector<float> texels) {
-  return Texture{.name = std::move(name), .dimensions = dimensions, .width = width, .height = height, .depth = depth,
-                 .texels = std::move(texels)};
-}
-
-Texture random_texture(std::string name, uint32_t dimensions, uint32_t width, uint32_t height, uint32_t depth,
-                       uint32_t seed) {
-  std::mt19937 generator(seed);
-  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-  std::vector<float> texels(size_t(width) * height * depth);
-  for (float& t : texels) t = unit(generator);
-  return make_texture(std::move(name), dimensions, width, height, depth, std::move(texels));
-}
-
-float texel(const Texture& t, int i, int j = 0, int k = 0) {
-  i = std::clamp(i, 0, int(t.width) - 1);
-  j = std::clamp(j, 0, int(t.height) - 1);
-  k = std::clamp(k, 0, int(t.depth) - 1);
-  return t.texels[(size_t(k) * t.height + size_t(j)) * t.width + size_t(i)];
-}
-
-// Exact (double) linear filtering with clamp-to-edge and texel centres at (i + 0.5) / n,
-// as the Vulkan and GL specifications define it before any precision limit.
-double linear_reference(const Texture& t, double u, double v = 0.5, double w = 0.5) {
-  const auto split = [](double coordinate, uint32_t size, int& base, double& fraction) {
-    const double x = coordinate * size - 0.5;
-    base = int(std::floor(x));
-    fraction = x - base;
-  };
-  int i, j = 0, k = 0;
-  double a, b = 0, c = 0;
-  split(u, t.width, i, a);
-  if (t.dimensions >= 2) split(v, t.height, j, b);
-  if (t.dimensions >= 3) split(w, t.depth, k, c);
-  double sum = 0;
-  for (int dk = 0; dk <= (t.dimensions >= 3 ? 1 : 0); ++dk)
-    for (int dj = 0; dj <= (t.dimensions >= 2 ? 1 : 0); ++dj)
-      for (int di = 0; di <= 1; ++di) {
-        const double weight = (di ? a : 1 - a) * (t.dimensions >= 2 ? (dj ? b : 1 - b) : 1.0) *
-                              (t.dimensions >= 3 ? (dk ? c : 1 - c) : 1.0);
-        sum += weight * texel(t, i + di, j + dj, k + dk);
-      }
-  return sum;
-}
-
-const char* sampler_type(uint32_t dimensions) {
-  return dimensions == 1 ? "sampler1D" : dimensions == 2 ? "sampler2D" : "sampler3D";
-}
-
-// Pixel x of an N x 1 target samples `lut` at coords[x] and writes the value to red.
-std::string probe_fragment_shader(uint32_t dimensions) {
-  const char* swizzle = dimensions == 1 ? ".x" : dimensions == 2 ? ".xy" : ".xyz";
-  return std::string("#version 450\n") +
-         "layout(set = 0, binding = 0) uniform Probes { vec4 coords[" + std::to_string(kMaxProbes) + "]; };\n" +
-         "layout(set = 0, binding = 1) uniform " + sampler_type(dimensions) + " lut;\n" +
-         "layout(location = 0) out vec4 colour;\n" +
-         "void main() { colour = vec4(texture(lut, coords[int(gl_FragCoord.x)]" + swizzle + ").r, 0.0, 0.0, 1.0); }\n";
-}
+using namespace texture_probes;
 
 struct Probe {
   float u, v = 0.5f, w = 0.5f;
