@@ -42,6 +42,14 @@ class TextureResolver {
   virtual Result<const Texture*> texture(const SamplerBinding& sampler) const = 0;
 };
 
+// How to time the draw on the device: `warmup` untimed repeats, then `runs` repeats
+// each timed by the driver's own clock (Vulkan timestamp queries, GL_TIME_ELAPSED).
+// runs = 0: the image is drawn once and only the CPU-side times are measured.
+struct TimingRequest {
+  int warmup = 1;
+  int runs = 0;
+};
+
 struct DrawJob {
   const CompiledProgram& program;
   ShaderPath path;
@@ -50,12 +58,20 @@ struct DrawJob {
   int width = 256;
   int height = 256;
   const TextureResolver* textures = nullptr;   // null: the program must declare no samplers
+  TimingRequest timing{};
 };
 
 struct RenderTimings {
-  double build_ms = 0;     // pipeline / program creation (driver compile + link)
-  double draw_ms = 0;      // submit + wait for the draw (CPU side)
+  // Pipeline / program creation including the driver's JIT. Backends keep what they
+  // build for later draws of the same program and path: then build_ms is 0 and
+  // program_cached is true.
+  double build_ms = 0;
+  bool program_cached = false;
+  double draw_ms = 0;          // submit + wait for the draw that made the image (CPU side)
   double readback_ms = 0;
+  std::vector<double> gpu_ms;  // one per timed run (TimingRequest::runs), the driver's clock
+  std::vector<double> wall_ms; // the same runs, CPU wall clock around submit + wait
+  std::string gpu_clock;       // what measured gpu_ms: "timestamp queries", "GL_TIME_ELAPSED"
 };
 
 struct RenderOutput {
@@ -72,6 +88,11 @@ class Backend {
   virtual std::vector<ShaderPath> paths(Language) const = 0;
   virtual Result<RenderOutput> render(const DrawJob&) = 0;
 };
+
+// The exact bytes a backend consumes for `program` along `path` (SPIR-V words or GLSL
+// text of both stages, with entry points): equal keys mean the same pipeline, so
+// backends key their pipeline caches with it.
+std::string program_key(const CompiledProgram& program, ShaderPath path);
 
 // Factories; an error when the driver is not available (e.g. no lavapipe ICD).
 Result<std::unique_ptr<Backend>> make_vulkan_backend();

@@ -1,5 +1,6 @@
 #include "report/JsonReport.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -63,6 +64,16 @@ ojson cell_json(const CellResult& r) {
   ojson times = ojson::object();
   for (const auto& [stage, ms] : r.time_ms) times[stage] = number(ms);
   cell["time_ms"] = std::move(times);
+  cell["program_cached"] = r.program_cached;
+  const auto interval = [](const TimingInterval& t) {
+    return ojson{{"median", number(t.median)},
+                 {"ci", {{"low", number(t.low)}, {"high", number(t.high)}, {"level", number(t.level)}}}};
+  };
+  cell["gpu_ms"] = {{"clock", r.gpu.clock},
+                    {"warmup", r.gpu.warmup},
+                    {"runs", r.gpu.runs},
+                    {"device", interval(r.gpu.device)},
+                    {"wall", interval(r.gpu.wall)}};
   cell["spirv_hash"] = {{"vertex", r.vertex_spirv_hash}, {"fragment", r.fragment_spirv_hash}};
   cell["artefacts"] = {{"render_exr", a.render_exr},         {"render_png", a.render_png},
                        {"error_exr", a.error_exr},           {"error_png", a.error_png},
@@ -122,6 +133,12 @@ void read(const json& parent, std::string_view key, const std::string& pointer, 
   if (v->is_number_unsigned()) out = v->get<size_t>();
   else if (v->is_number_integer() && v->get<long long>() >= 0) out = size_t(v->get<long long>());
   else throw BadField{child(pointer, key), "expected a count (integer >= 0), found " + v->dump()};
+}
+
+void read(const json& parent, std::string_view key, const std::string& pointer, int& out) {
+  size_t count = size_t(std::max(out, 0));
+  read(parent, key, pointer, count);
+  out = int(count);
 }
 
 void read(const json& parent, std::string_view key, const std::string& pointer, bool& out) {
@@ -207,6 +224,23 @@ CellResult read_cell(const json& c, const std::string& p) {
   }
   if (const json* t = object_at(c, "time_ms", p))
     for (const auto& [stage, ms] : t->items()) r.time_ms[stage] = to_double(ms, child(child(p, "time_ms"), stage));
+  read(c, "program_cached", p, r.program_cached);
+  if (const json* g = object_at(c, "gpu_ms", p)) {
+    const std::string gp = child(p, "gpu_ms");
+    read(*g, "clock", gp, r.gpu.clock);
+    read(*g, "warmup", gp, r.gpu.warmup);
+    read(*g, "runs", gp, r.gpu.runs);
+    for (auto [name, out] : {std::pair{"device", &r.gpu.device}, std::pair{"wall", &r.gpu.wall}})
+      if (const json* t = object_at(*g, name, gp)) {
+        const std::string tp = child(gp, name);
+        read(*t, "median", tp, out->median);
+        if (const json* ci = object_at(*t, "ci", tp)) {
+          read(*ci, "low", child(tp, "ci"), out->low);
+          read(*ci, "high", child(tp, "ci"), out->high);
+          read(*ci, "level", child(tp, "ci"), out->level);
+        }
+      }
+  }
   if (const json* h = object_at(c, "spirv_hash", p)) {
     read(*h, "vertex", child(p, "spirv_hash"), r.vertex_spirv_hash);
     read(*h, "fragment", child(p, "spirv_hash"), r.fragment_spirv_hash);

@@ -28,7 +28,11 @@ namespace shaderbed {
 //                "values": {"render": {"nan", "pos_inf", "neg_inf", "negative", "above_one"},
 //                           "reference": {...same...}}},
 //    "tolerance": {"interior", "silhouette", "lut": {"bound", "derivation"}},
-//    "time_ms": {"compile": ..., "build": ..., ...},
+//    "time_ms": {"compile": ..., "build": ..., ...},      (CPU wall times; build 0 when cached)
+//    "program_cached": bool,                   (the backend reused an earlier cell's pipeline)
+//    "gpu_ms": {"clock": "timestamp queries" | "GL_TIME_ELAPSED" | "", "warmup", "runs",
+//               "device": {"median", "ci": {"low", "high", "level"}},   (driver's clock)
+//               "wall": {...same...}},                                  (CPU clock per repeat)
 //    "spirv_hash": {"vertex", "fragment"},
 //    "artefacts": {"render_exr", "render_png", "error_exr", "error_png", "reference_png",
 //                  "vertex_spirv", "fragment_spirv", "vertex_cross_glsl", "fragment_cross_glsl"},

@@ -46,6 +46,26 @@ struct CellArtefacts {                // paths under the run's --out folder ("" 
   std::string vertex_cross_glsl, fragment_cross_glsl;  // SPIRV-Cross output
 };
 
+// A median with its confidence interval (timing/MedianInterval).
+struct TimingInterval {
+  double median = 0;
+  double low = 0;
+  double high = 0;
+  double level = 0;         // the interval's actual coverage, e.g. 0.9375 for 5 runs, 0.96 for 9
+};
+
+// The draw repeated (warm-up, then `runs` timed repeats), each repeat timed twice: by the
+// driver's clock (Vulkan timestamp queries, GL_TIME_ELAPSED) and by the CPU's wall clock
+// around submit + wait. On these CPU drivers the wall time is the honest cost; llvmpipe's
+// GL_TIME_ELAPSED misses most of the rasteriser threads' work (docs/timing.md).
+struct GpuTiming {
+  std::string clock;        // "timestamp queries", "GL_TIME_ELAPSED"; "" = not timed
+  int warmup = 0;
+  int runs = 0;
+  TimingInterval device;    // the driver's clock
+  TimingInterval wall;      // CPU wall clock per repeat
+};
+
 struct CellResult {
   std::string case_name, variant, language, backend, path, shape;
   std::string status;               // "pass", "fail" or "error"
@@ -62,7 +82,12 @@ struct CellResult {
   double silhouette_threshold = 0;
   double lut_bound = 0;             // LUT variants: the derived LUT error bound in the threshold
   std::string lut_derivation;
-  std::map<std::string, double> time_ms;   // compile, build, draw, readback, reference, compare
+  // CPU wall times: compile, build, draw, readback, reference, compare. "build" is the
+  // driver's pipeline/program build + JIT, 0 when the backend reused the pipeline of an
+  // earlier cell with the same program (program_cached).
+  std::map<std::string, double> time_ms;
+  bool program_cached = false;
+  GpuTiming gpu;
   std::string vertex_spirv_hash, fragment_spirv_hash;   // hex FNV-1a 64 of the driver SPIR-V
   CellArtefacts artefacts;
 

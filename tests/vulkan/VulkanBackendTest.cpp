@@ -82,23 +82,48 @@ TEST(VulkanBackend, SizesChangeBetweenDraws) {
   }
 }
 
-TEST(VulkanBackend, TimingsAreMeasuredFor256Square) {
-  auto program = compile_glsl(passthrough_vertex_shader, constant_fragment_shader("vec4(0.25, 1.5, -2.0, 1.0)"));
+TEST(VulkanBackend, APipelineIsBuiltOnceAndTimedDrawsAreRepeated) {
+  // A colour no other test uses, so this program's pipeline cannot be in the cache yet.
+  auto program = compile_glsl(passthrough_vertex_shader, constant_fragment_shader("vec4(0.25, 1.5, -2.0, 0.125)"));
   ASSERT_TRUE(program) << program.error().to_string();
   const MapResolver no_uniforms;
-  auto out = draw(*program, full_screen_quad(), no_uniforms, 256, 256);
-  ASSERT_TRUE(out) << out.error().to_string();
-  const RenderTimings& t = out->timings;
-  EXPECT_GT(t.build_ms, 0.0);
-  EXPECT_GT(t.draw_ms, 0.0);
-  EXPECT_GT(t.readback_ms, 0.0);
-  auto* renderer = dynamic_cast<vulkan::VulkanRenderer*>(shared_backend());
-  ASSERT_NE(renderer, nullptr);
-  ASSERT_TRUE(renderer->last_gpu_draw_ms().has_value());
-  EXPECT_GE(*renderer->last_gpu_draw_ms(), 0.0);
-  EXPECT_LE(*renderer->last_gpu_draw_ms(), t.draw_ms);
-  std::printf("256x256 quad: build %.3f ms, draw %.3f ms (timestamps %.3f ms), readback %.3f ms\n", t.build_ms,
-              t.draw_ms, *renderer->last_gpu_draw_ms(), t.readback_ms);
+  const Mesh quad = full_screen_quad();
+  Backend* backend = shared_backend();
+  ASSERT_NE(backend, nullptr);
+  const DrawJob job{.program = *program, .path = ShaderPath::spirv, .mesh = quad, .uniforms = no_uniforms,
+                    .width = 256, .height = 256, .timing = {.warmup = 1, .runs = 4}};
+  auto first = backend->render(job);
+  ASSERT_TRUE(first) << first.error().to_string();
+  auto second = backend->render(job);
+  ASSERT_TRUE(second) << second.error().to_string();
+
+  EXPECT_FALSE(first->timings.program_cached);
+  EXPECT_GT(first->timings.build_ms, 0.0);
+  EXPECT_TRUE(second->timings.program_cached);
+  EXPECT_EQ(second->timings.build_ms, 0.0);
+  EXPECT_EQ(first->image.rgba, second->image.rgba);   // the cached pipeline draws the same image
+  for (const RenderTimings* t : {&first->timings, &second->timings}) {
+    EXPECT_EQ(t->gpu_clock, "timestamp queries");
+    ASSERT_EQ(t->gpu_ms.size(), 4u);
+    ASSERT_EQ(t->wall_ms.size(), 4u);
+    for (size_t i = 0; i < 4; ++i) {
+      EXPECT_GT(t->gpu_ms[i], 0.0);
+      // The timestamps bracket work that submit + wait also waited for.
+      EXPECT_LE(t->gpu_ms[i], t->wall_ms[i]);
+    }
+  }
+  std::printf("256x256 quad: build %.3f ms, draw %.3f ms, timestamps %.3f ms, readback %.3f ms\n",
+              first->timings.build_ms, first->timings.draw_ms, first->timings.gpu_ms[0], first->timings.readback_ms);
+
+  // Another program (even one differing only in a constant) is another pipeline.
+  auto other = compile_glsl(passthrough_vertex_shader, constant_fragment_shader("vec4(0.25, 1.5, -2.0, 0.25)"));
+  ASSERT_TRUE(other) << other.error().to_string();
+  auto third = backend->render(DrawJob{.program = *other, .path = ShaderPath::spirv, .mesh = quad,
+                                       .uniforms = no_uniforms, .width = 256, .height = 256});
+  ASSERT_TRUE(third) << third.error().to_string();
+  EXPECT_FALSE(third->timings.program_cached);
+  EXPECT_TRUE(third->timings.gpu_ms.empty());   // runs = 0: not timed
+  EXPECT_EQ(third->image.rgba[3], 0.25f);
 }
 
 }  // namespace

@@ -108,7 +108,13 @@ namespace shaderbed::gl {
   X(PFNGLBINDVERTEXARRAYPROC, BindVertexArray, "glBindVertexArray")                      \
   X(PFNGLENABLEVERTEXATTRIBARRAYPROC, EnableVertexAttribArray, "glEnableVertexAttribArray") \
   X(PFNGLVERTEXATTRIBPOINTERPROC, VertexAttribPointer, "glVertexAttribPointer")          \
-  X(PFNGLDRAWELEMENTSPROC, DrawElements, "glDrawElements")
+  X(PFNGLDRAWELEMENTSPROC, DrawElements, "glDrawElements")                              \
+  /* GPU timing (GL_TIME_ELAPSED, core since 3.3) */                                     \
+  X(PFNGLGENQUERIESPROC, GenQueries, "glGenQueries")                                     \
+  X(PFNGLDELETEQUERIESPROC, DeleteQueries, "glDeleteQueries")                            \
+  X(PFNGLBEGINQUERYPROC, BeginQuery, "glBeginQuery")                                     \
+  X(PFNGLENDQUERYPROC, EndQuery, "glEndQuery")                                           \
+  X(PFNGLGETQUERYOBJECTUI64VPROC, GetQueryObjectui64v, "glGetQueryObjectui64v")
 
 struct GlFunctions {
 #define SHADERBED_GL_MEMBER(type, member, name) type member = nullptr;

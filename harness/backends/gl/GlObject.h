@@ -8,7 +8,7 @@
 
 namespace shaderbed::gl {
 
-enum class GlObjectKind { buffer, vertex_array, texture, framebuffer, shader, program };
+enum class GlObjectKind { buffer, vertex_array, texture, framebuffer, shader, program, query };
 
 template <GlObjectKind kind>
 class GlObject {
@@ -39,6 +39,7 @@ class GlObject {
     if constexpr (kind == GlObjectKind::framebuffer) gl_->DeleteFramebuffers(1, &name_);
     if constexpr (kind == GlObjectKind::shader) gl_->DeleteShader(name_);
     if constexpr (kind == GlObjectKind::program) gl_->DeleteProgram(name_);
+    if constexpr (kind == GlObjectKind::query) gl_->DeleteQueries(1, &name_);
     name_ = 0;
   }
 
@@ -53,6 +54,7 @@ using GlTexture = GlObject<GlObjectKind::texture>;
 using GlFramebuffer = GlObject<GlObjectKind::framebuffer>;
 using GlShader = GlObject<GlObjectKind::shader>;
 using GlProgram = GlObject<GlObjectKind::program>;
+using GlQuery = GlObject<GlObjectKind::query>;
 
 // glGen* for one object of the kind, owned.
 inline GlBuffer make_buffer(const GlFunctions& gl) {

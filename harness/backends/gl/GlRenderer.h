@@ -8,11 +8,14 @@
 //
 // A renderer's context is bound to the calling thread on every render(); use one
 // renderer from one thread at a time.
+#include <map>
 #include <optional>
 #include <string>
 
 #include "backends/Backend.h"
 #include "backends/gl/GlFunctions.h"
+#include "backends/gl/GlObject.h"
+#include "backends/gl/GlProgramInterface.h"
 #include "backends/gl/GlRenderTarget.h"
 #include "backends/gl/OsMesaContext.h"
 
@@ -34,11 +37,22 @@ class GlRenderer final : public Backend {
   Result<const GlRenderTarget*> target_of_size(int width, int height);
   void set_fixed_function_state() const;
 
+  // A linked program (its JIT done by a first draw) and what it asks to be fed, kept for
+  // later draws of the same program along the same path.
+  struct LinkedProgram {
+    GlProgram program;
+    GlProgramInterface interface;
+  };
+  Result<LinkedProgram> link(const DrawJob& job);
+  Result<void> time_draws(const DrawJob& job, GLsizei index_count, RenderTimings& timings);
+
   OsMesaContext context_;
   GlFunctions gl_;
   std::string driver_version_;
   bool has_gl_spirv_ = false;
   std::optional<GlRenderTarget> target_;  // kept across renders of the same size
+  static constexpr size_t max_cached_programs = 512;
+  std::map<std::string, LinkedProgram> programs_;   // by program_key()
 };
 
 }  // namespace shaderbed::gl

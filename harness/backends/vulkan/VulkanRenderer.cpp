@@ -35,7 +35,7 @@ double ms_since(Clock::time_point start) {
 struct DrawResources {
   DrawTextures textures;  // first: destroyed after the descriptor sets that refer to it
   DescriptorBindings bindings;
-  GraphicsPipeline pipeline;
+  const GraphicsPipeline* pipeline;   // owned by the renderer's pipeline cache
   HostBuffer vertices;
   HostBuffer indices;
 };
@@ -71,7 +71,7 @@ void record_pass(VkCommandBuffer commands, VkRenderPass render_pass, const DrawP
                                     .clearValueCount = uint32_t(clears.size()),
                                     .pClearValues = clears.data()};
   vkCmdBeginRenderPass(commands, &begin, VK_SUBPASS_CONTENTS_INLINE);
-  vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.resources.pipeline.pipeline());
+  vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.resources.pipeline->pipeline());
   // Negative height (origin at the bottom edge) flips Vulkan's y-down clip space so
   // NDC y = +1 lands on image row 0, the top, as in GL and D3D and as Image expects.
   const VkViewport viewport{.x = 0.0f,
@@ -82,7 +82,7 @@ void record_pass(VkCommandBuffer commands, VkRenderPass render_pass, const DrawP
                             .maxDepth = 1.0f};
   vkCmdSetViewport(commands, 0, 1, &viewport);
   vkCmdSetScissor(commands, 0, 1, &pass.scissor);
-  pass.resources.bindings.bind(commands, pass.resources.pipeline.layout());
+  pass.resources.bindings.bind(commands, pass.resources.pipeline->layout());
   const VkBuffer vertex_buffer = pass.resources.vertices.buffer();
   const VkDeviceSize zero = 0;
   vkCmdBindVertexBuffers(commands, 0, 1, &vertex_buffer, &zero);
@@ -128,9 +128,11 @@ Result<std::unique_ptr<VulkanRenderer>> VulkanRenderer::create() {
 VulkanRenderer::~VulkanRenderer() {
   if (device_ && device_->lost()) {
     abandon(std::move(targets_));
+    abandon(std::move(pipelines_));
     abandon(std::move(render_pass_));
   }
   targets_.clear();
+  pipelines_.clear();
   render_pass_.reset();
 }
 
@@ -192,45 +194,66 @@ Result<RenderOutput> VulkanRenderer::render(const DrawJob& job) {
 
   RenderOutput output;
   RenderTarget& rt = **target;
+  const std::string key = program_key(job.program, ShaderPath::spirv);
+  auto cached = pipelines_.find(key);
+  output.timings.program_cached = cached != pipelines_.end();
   const auto build_start = Clock::now();
-  auto pipeline = GraphicsPipeline::create(*device_, render_pass_.get(), job.program, *vertex_input, bindings->set_layouts());
-  if (!pipeline) return std::unexpected(pipeline.error());
-  DrawResources draw{std::move(*textures), std::move(*bindings), std::move(*pipeline), std::move(*vertices),
+  if (!output.timings.program_cached) {
+    auto pipeline =
+        GraphicsPipeline::create(*device_, render_pass_.get(), job.program, *vertex_input, bindings->set_layouts());
+    if (!pipeline) return std::unexpected(pipeline.error());
+    // Bounded so long sweeps cannot grow it without limit; which entry goes does not
+    // matter for correctness, only for how often a pipeline is rebuilt.
+    if (pipelines_.size() >= max_cached_pipelines) pipelines_.erase(pipelines_.begin());
+    cached = pipelines_.emplace(key, std::move(*pipeline)).first;
+  }
+  // Descriptor sets from this draw's layouts bind to the cached pipeline's layout: the
+  // layouts are identically defined (same program), which is what Vulkan's layout
+  // compatibility requires.
+  DrawResources draw{std::move(*textures), std::move(*bindings), &cached->second, std::move(*vertices),
                      std::move(*indices)};
-  // lavapipe translates the pipeline's shaders to machine code (LLVM) only when a draw
-  // first uses them, so vkCreateGraphicsPipelines alone measures almost nothing and the
-  // compile would be billed to draw_ms. A first draw of one triangle, scissored to one
-  // pixel, makes the driver finish compiling; the real pass clears that pixel again.
-  const DrawPass priming{.target = rt, .resources = draw, .index_count = 3, .scissor = {{0, 0}, {1, 1}}};
-  auto primed = device_->submit_and_wait([&](VkCommandBuffer commands) { record_pass(commands, render_pass_.get(), priming); });
-  output.timings.build_ms = ms_since(build_start);
-  if (!primed) {
-    if (device_->lost()) abandon(std::move(draw));
-    return std::unexpected(primed.error());
+  const auto submit = [&](const DrawPass& pass) -> Result<void> {
+    auto done = device_->submit_and_wait([&](VkCommandBuffer commands) { record_pass(commands, render_pass_.get(), pass); });
+    if (!done && device_->lost()) abandon(std::move(draw));
+    return done;
+  };
+  if (!output.timings.program_cached) {
+    // lavapipe translates the pipeline's shaders to machine code (LLVM) only when a draw
+    // first uses them, so vkCreateGraphicsPipelines alone measures almost nothing and the
+    // compile would be billed to draw_ms. A first draw of one triangle, scissored to one
+    // pixel, makes the driver finish compiling; the real pass clears that pixel again.
+    const DrawPass priming{.target = rt, .resources = draw, .index_count = 3, .scissor = {{0, 0}, {1, 1}}};
+    if (auto primed = submit(priming); !primed) return std::unexpected(primed.error());
+    output.timings.build_ms = ms_since(build_start);
   }
 
-  const std::optional<VkQueryPool> timestamps = device_->timestamp_pool();
   const DrawPass full{.target = rt,
                       .resources = draw,
                       .index_count = uint32_t(job.mesh.indices.size()),
-                      .scissor = {{0, 0}, extent},
-                      .timestamps = timestamps};
-  last_gpu_draw_ms_.reset();
+                      .scissor = {{0, 0}, extent}};
   const auto draw_start = Clock::now();
-  auto drawn = device_->submit_and_wait([&](VkCommandBuffer commands) { record_pass(commands, render_pass_.get(), full); });
+  if (auto drawn = submit(full); !drawn) return std::unexpected(drawn.error());
   output.timings.draw_ms = ms_since(draw_start);
-  if (!drawn) {
-    if (device_->lost()) abandon(std::move(draw));
-    return std::unexpected(drawn.error());
-  }
 
-  if (timestamps) {
-    std::array<uint64_t, 2> ticks{};
-    const VkResult r = vkGetQueryPoolResults(device_->device(), *timestamps, 0, 2, sizeof(ticks), ticks.data(),
-                                             sizeof(uint64_t), VK_QUERY_RESULT_64_BIT);
-    if (r == VK_SUCCESS) {
+  // Repeats draw the same image again (the draw is deterministic), so the target still
+  // holds it for the readback below.
+  const std::optional<VkQueryPool> timestamps = device_->timestamp_pool();
+  if (job.timing.runs > 0 && timestamps) {
+    output.timings.gpu_clock = "timestamp queries";
+    for (int i = 0; i < job.timing.warmup; ++i)
+      if (auto drawn = submit(full); !drawn) return std::unexpected(drawn.error());
+    DrawPass timed = full;
+    timed.timestamps = timestamps;
+    for (int i = 0; i < job.timing.runs; ++i) {
+      const auto start = Clock::now();
+      if (auto drawn = submit(timed); !drawn) return std::unexpected(drawn.error());
+      output.timings.wall_ms.push_back(ms_since(start));
+      std::array<uint64_t, 2> ticks{};
+      const VkResult r = vkGetQueryPoolResults(device_->device(), *timestamps, 0, 2, sizeof(ticks), ticks.data(),
+                                               sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT);
+      if (auto ok = check(r, "vkGetQueryPoolResults"); !ok) return std::unexpected(ok.error());
       const uint64_t elapsed = (ticks[1] - ticks[0]) & device_->timestamp_mask();
-      last_gpu_draw_ms_ = double(elapsed) * device_->timestamp_period_ns() / 1e6;
+      output.timings.gpu_ms.push_back(double(elapsed) * device_->timestamp_period_ns() / 1e6);
     }
   }
 

@@ -1,6 +1,7 @@
 #pragma once
 // shaderbed's Vulkan backend on lavapipe: one device for the backend's lifetime, a
-// render target per image size, and per draw a pipeline, descriptor sets, lookup
+// render target per image size, a pipeline per program (kept for later draws of it:
+// the driver's compile is most of a draw's cost), and per draw descriptor sets, lookup
 // textures and mesh buffers that are destroyed when the draw has been read back.
 #include <map>
 #include <memory>
@@ -13,6 +14,7 @@
 #include "backends/Backend.h"
 #include "backends/vulkan/VulkanDevice.h"
 #include "backends/vulkan/VulkanHandles.h"
+#include "backends/vulkan/VulkanPipeline.h"
 #include "backends/vulkan/VulkanRenderTarget.h"
 
 namespace shaderbed::vulkan {
@@ -28,12 +30,6 @@ class VulkanRenderer final : public Backend {
   // Not reentrant: one draw at a time per renderer.
   Result<RenderOutput> render(const DrawJob& job) override;
 
-  // GPU time of the last draw's render pass from timestamp queries (lavapipe timestamps
-  // are CPU clock readings taken when its threads run the commands); nullopt when the
-  // queue has no timestamps or no draw succeeded yet. Not part of Backend: RenderTimings
-  // stays CPU-measured so every backend reports the same kind of number.
-  std::optional<double> last_gpu_draw_ms() const { return last_gpu_draw_ms_; }
-
  private:
   explicit VulkanRenderer(std::unique_ptr<VulkanDevice> device) : device_(std::move(device)) {}
   Result<RenderTarget*> target_for(VkExtent2D extent);
@@ -44,7 +40,8 @@ class VulkanRenderer final : public Backend {
   // Targets are few (one per image size a run uses) and costly to allocate, so they live
   // as long as the renderer.
   std::map<std::pair<uint32_t, uint32_t>, std::unique_ptr<RenderTarget>> targets_;
-  std::optional<double> last_gpu_draw_ms_;
+  static constexpr size_t max_cached_pipelines = 512;
+  std::map<std::string, GraphicsPipeline> pipelines_;   // by program_key()
 };
 
 }  // namespace shaderbed::vulkan

@@ -6,7 +6,9 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <regex>
+#include <thread>
 
 #include <fmt/format.h>
 
@@ -31,6 +33,7 @@
 #include "scene/NameFilter.h"
 #include "scene/Primitives.h"
 #include "scene/ProjectedArea.h"
+#include "timing/MedianInterval.h"
 
 namespace shaderbed {
 namespace fs = std::filesystem;
@@ -72,6 +75,14 @@ std::string llvm_version(const std::string& driver) {
   static const std::regex llvm(R"(LLVM ([0-9.]+))");
   std::smatch m;
   return std::regex_search(driver, m, llvm) ? m[1].str() : "";
+}
+
+GpuTiming gpu_timing(const RenderTimings& t, const TimingRequest& request) {
+  const auto interval = [](const std::vector<double>& ms) {
+    const MedianInterval m = median_interval(ms);
+    return TimingInterval{m.median, m.low, m.high, m.level};
+  };
+  return {t.gpu_clock, request.warmup, int(t.gpu_ms.size()), interval(t.gpu_ms), interval(t.wall_ms)};
 }
 
 // Everything computed once and shared by the cells that need it.
@@ -226,12 +237,15 @@ class GroupRunner {
     CaseTextures textures(table, *lut, c.path);
     auto rendered = (*cell.backend->backend)
                         ->render(DrawJob{*compiled.program, cell.path, mesh, uniforms, scene_.width, scene_.height,
-                                         &textures});
+                                         &textures, o_.timing});
     if (!rendered)
       return std::unexpected(Error(rendered.error()).in_backend(cell.backend->name + "/" + to_string(cell.path)));
-    r.time_ms["build"] = rendered->timings.build_ms;
-    r.time_ms["draw"] = rendered->timings.draw_ms;
-    r.time_ms["readback"] = rendered->timings.readback_ms;
+    const RenderTimings& t = rendered->timings;
+    r.time_ms["build"] = t.build_ms;
+    r.time_ms["draw"] = t.draw_ms;
+    r.time_ms["readback"] = t.readback_ms;
+    r.program_cached = t.program_cached;
+    if (!t.gpu_ms.empty()) r.gpu = gpu_timing(t, o_.timing);
 
     const auto t0 = Clock::now();
     const Comparison cmp =
@@ -264,6 +278,71 @@ class GroupRunner {
   double area_ = 0;   // the current group's expected projected area, in pixels
 };
 
+std::vector<BackendSlot> start_backends(const RunOptions& o) {
+  std::vector<BackendSlot> backends;
+  for (const char* name : {"vulkan", "gl"})
+    if (wanted(o.backends, name))
+      backends.push_back({name, std::string(name) == "vulkan" ? make_vulkan_backend() : make_gl_backend()});
+  return backends;
+}
+
+// Consecutive groups of one case x variant: they share programs, so one worker runs
+// them all and builds each pipeline once.
+std::vector<std::vector<const CellGroup*>> bundles_of(const std::vector<CellGroup>& groups) {
+  std::vector<std::vector<const CellGroup*>> bundles;
+  for (const CellGroup& g : groups) {
+    if (bundles.empty() || bundles.back().front()->c != g.c || bundles.back().front()->variant != g.variant)
+      bundles.emplace_back();
+    bundles.back().push_back(&g);
+  }
+  return bundles;
+}
+
+// Runs the groups on `o.jobs` workers. The first uses the backends already started (so the
+// report's driver versions are the ones that ran); every other worker starts its own,
+// as a Vulkan device and a GL context serve one thread at a time.
+std::vector<CellResult> run_groups(const RunOptions& o, const SceneSetup& scene, const std::vector<CellGroup>& groups,
+                                   std::vector<BackendSlot>& first_backends, size_t total) {
+  const auto bundles = bundles_of(groups);
+  const int hardware = int(std::max(1u, std::thread::hardware_concurrency()));
+  const size_t workers = std::min(bundles.size(), size_t(o.jobs > 0 ? o.jobs : hardware));
+  std::mutex mutex;   // guards next, results, o.on_cell
+  size_t next = 0;
+  std::vector<CellResult> results;
+  const auto work = [&](std::vector<BackendSlot>& backends) {
+    Caches caches;
+    GroupRunner runner(o, scene, caches);
+    for (;;) {
+      size_t b;
+      {
+        const std::lock_guard lock(mutex);
+        if (next == bundles.size()) return;
+        b = next++;
+      }
+      for (const CellGroup* g : bundles[b]) {
+        // The plan points at the first worker's backends; run on this worker's own.
+        CellGroup local = *g;
+        for (PlannedCell& cell : local.cells) cell.backend = &backends[cell.backend - first_backends.data()];
+        for (CellResult& r : runner.run(local)) {
+          const std::lock_guard lock(mutex);
+          results.push_back(std::move(r));
+          if (o.on_cell) o.on_cell(results.size(), total, results.back());
+        }
+      }
+    }
+  };
+  std::vector<std::vector<BackendSlot>> own(workers > 1 ? workers - 1 : 0);
+  std::vector<std::jthread> threads;
+  for (auto& backends : own)
+    threads.emplace_back([&] {
+      backends = start_backends(o);
+      work(backends);
+    });
+  work(first_backends);
+  threads.clear();   // joins
+  return results;
+}
+
 }  // namespace
 
 std::string default_cases_dir() {
@@ -293,10 +372,7 @@ Result<RunReport> run_suite(const RunOptions& o) {
     shard = *parsed;
   }
 
-  std::vector<BackendSlot> backends;
-  for (const char* name : {"vulkan", "gl"})
-    if (wanted(o.backends, name))
-      backends.push_back({name, std::string(name) == "vulkan" ? make_vulkan_backend() : make_gl_backend()});
+  std::vector<BackendSlot> backends = start_backends(o);
 
   std::vector<CellGroup> groups = plan_cells(*cases, backends, {o.variants, o.languages, o.shapes});
   if (groups.empty()) return fail("options", "the filters select no cells");
@@ -317,13 +393,8 @@ Result<RunReport> run_suite(const RunOptions& o) {
 
   SceneSetup scene;
   scene.width = scene.height = o.size;
-  Caches caches;
-  GroupRunner runner(o, scene, caches);
-  for (const CellGroup& g : groups)
-    for (CellResult& r : runner.run(g)) {
-      report.results.push_back(std::move(r));
-      if (o.on_cell) o.on_cell(report.results.size(), total, report.results.back());
-    }
+  std::vector<CellResult> results = run_groups(o, scene, groups, backends, total);
+  report.results = std::move(results);
   apply_expectations(known, report);
   sort_results(report);
   report.wall_ms = ms_since(start);

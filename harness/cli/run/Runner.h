@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "backends/Backend.h"
 #include "core/Error.h"
 #include "report/Results.h"
 
@@ -24,7 +25,12 @@ struct RunOptions {
   std::string out_dir;                   // images go here; empty = no images
   std::string shard;                     // "I/N": run only this shard of the cell groups
   std::string expectations;              // known-failures TOML file, "" = none
-  std::function<void(size_t done, size_t total, const CellResult&)> on_cell;   // progress
+  // Worker threads, each with its own Vulkan device and GL context; 0 = one per core.
+  // Whole case x variant bundles go to one worker, so each pipeline is built once.
+  int jobs = 0;
+  TimingRequest timing{.warmup = 1, .runs = 5};   // GPU timing of every cell's draw
+  // Progress; called from the worker threads, one call at a time.
+  std::function<void(size_t done, size_t total, const CellResult&)> on_cell;
 };
 
 Result<RunReport> run_suite(const RunOptions& options);

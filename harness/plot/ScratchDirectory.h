@@ -1,0 +1,25 @@
+#pragma once
+// A private temporary directory for one gnuplot run (script, data, raw outputs),
+// removed with everything in it when it goes out of scope.
+#include <filesystem>
+
+#include "core/Error.h"
+
+namespace shaderbed {
+
+class ScratchDirectory {
+ public:
+  static Result<ScratchDirectory> create();
+  ScratchDirectory(ScratchDirectory&& other) noexcept : path_(std::move(other.path_)) { other.path_.clear(); }
+  ScratchDirectory& operator=(ScratchDirectory&&) = delete;
+  ScratchDirectory(const ScratchDirectory&) = delete;
+  ~ScratchDirectory();
+
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  explicit ScratchDirectory(std::filesystem::path p) : path_(std::move(p)) {}
+  std::filesystem::path path_;
+};
+
+}  // namespace shaderbed
