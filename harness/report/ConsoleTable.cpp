@@ -1,7 +1,6 @@
 #include "report/ConsoleTable.h"
 
 #include <algorithm>
-#include <array>
 #include <string>
 #include <vector>
 
@@ -11,8 +10,6 @@
 
 namespace shaderbed {
 namespace {
-
-constexpr size_t kColumns = 10;
 
 std::string verdict(const CellResult& r) {
   if (r.status == "pass") return "pass";
@@ -35,30 +32,46 @@ void print_images(const CellResult& r, std::FILE* out) {
   if (!a.reference_png.empty()) fmt::print(out, "      ref:    {}\n", a.reference_png);
 }
 
+// "1.234 [1.201, 1.310]": the median and its confidence interval, or "-".
+std::string interval(const TimingInterval& t, int runs) {
+  if (runs == 0) return "-";
+  return fmt::format("{:.3f} [{:.3f}, {:.3f}]", t.median, t.low, t.high);
+}
+
 }  // namespace
 
-void print_table(const RunReport& report, std::FILE* out) {
+void print_table(const RunReport& report, std::FILE* out, const TableOptions& options) {
   using markup::sci;
-  static const char* const headers[kColumns] = {"case",    "variant", "lang",     "backend", "path",
-                                                "shape",   "max err", "min pass", "rmse",    "verdict"};
-  std::vector<std::array<std::string, kColumns>> rows;
+  std::vector<std::string> headers = {"case", "variant", "lang",     "backend", "path",
+                                      "shape", "max err", "min pass", "rmse",    "verdict"};
+  if (options.timing)
+    for (const char* h : {"draw ms (wall, median [CI])", "driver clock ms", "build ms"}) headers.push_back(h);
+  std::vector<std::vector<std::string>> rows;
   for (const CellResult& r : report.results) {
     const bool measured = r.status != "error";
     rows.push_back({r.case_name, r.variant, r.language, r.backend, r.path, r.shape,
                     measured ? sci(r.metrics.max_abs) : "-", measured ? sci(r.metrics.min_passing_interior) : "-",
                     measured ? sci(r.metrics.rmse) : "-", verdict(r)});
+    if (!options.timing) continue;
+    const auto build = r.time_ms.find("build");
+    rows.back().push_back(interval(r.gpu.wall, r.gpu.runs));
+    rows.back().push_back(interval(r.gpu.device, r.gpu.runs));
+    rows.back().push_back(r.program_cached                 ? "cached"
+                          : build == r.time_ms.end() ? "-"
+                                                     : fmt::format("{:.1f}", build->second));
   }
-  std::array<size_t, kColumns> width{};
-  for (size_t c = 0; c < kColumns; ++c) width[c] = std::string_view(headers[c]).size();
+  const size_t columns = headers.size();
+  std::vector<size_t> width(columns);
+  for (size_t c = 0; c < columns; ++c) width[c] = headers[c].size();
   for (const auto& row : rows)
-    for (size_t c = 0; c < kColumns; ++c) width[c] = std::max(width[c], row[c].size());
+    for (size_t c = 0; c < columns; ++c) width[c] = std::max(width[c], row[c].size());
   auto print_row = [&](auto&& cell) {
     std::string line;
-    for (size_t c = 0; c < kColumns; ++c) line += fmt::format("{:<{}}  ", cell(c), width[c]);
+    for (size_t c = 0; c < columns; ++c) line += fmt::format("{:<{}}  ", cell(c), width[c]);
     while (!line.empty() && line.back() == ' ') line.pop_back();
     fmt::print(out, "{}\n", line);
   };
-  print_row([&](size_t c) { return std::string(headers[c]); });
+  print_row([&](size_t c) { return headers[c]; });
   for (const auto& row : rows) print_row([&](size_t c) { return row[c]; });
 
   auto section = [&](const char* title, auto&& wanted, auto&& body) {
@@ -91,6 +104,10 @@ void print_table(const RunReport& report, std::FILE* out) {
 
   size_t known = 0;
   for (const CellResult& r : report.results) known += r.status == "fail" && r.known_failure;
+  if (options.timing && !report.results.empty())
+    fmt::print(out, "\ntimes: each draw repeated after a warm-up; [CI] is the median's confidence interval "
+                    "(order statistics). On llvmpipe GL_TIME_ELAPSED misses most rasteriser work: read the wall "
+                    "column (docs/timing.md).\n");
   fmt::print(out, "\n{} cells: {} passed, {} failed, {} known, {} errors in {:.1f} s\n", report.results.size(),
              report.count("pass"), report.count("fail") - known, known, report.count("error"), report.wall_ms / 1000.0);
 }

@@ -56,6 +56,8 @@ RunReport every_field() {
   r.lut_bound = 3.5e-4;
   r.lut_derivation = "256 entries, linear filtering: |f''| h^2 / 8";
   r.time_ms = {{"compile", 1.25}, {"build", 2.5}, {"draw", 0.125}, {"readback", 0.0625}, {"reference", 30}, {"compare", 4}};
+  r.program_cached = true;
+  r.gpu = {"GL_TIME_ELAPSED", 1, 5, {0.015, 0.014, 0.025, 0.9375}, {0.875, 0.8125, 1.5, 0.9375}};
   r.vertex_spirv_hash = "00112233aabbccdd";
   r.fragment_spirv_hash = "ffeeddccbbaa9988";
   r.artefacts = {"a.exr", "a.png", "a.error.exr", "a.error.png", "reference.png",
@@ -122,6 +124,11 @@ TEST(JsonReport, RoundTripIsExact) {
   EXPECT_EQ(r.time_ms.at("readback"), 0.0625);
   EXPECT_EQ(r.artefacts.vertex_cross_glsl, "v.cross.glsl");
   EXPECT_EQ(r.fragment_spirv_hash, "ffeeddccbbaa9988");
+  EXPECT_TRUE(r.program_cached);
+  EXPECT_EQ(r.gpu.clock, "GL_TIME_ELAPSED");
+  EXPECT_EQ(r.gpu.runs, 5);
+  EXPECT_EQ(r.gpu.wall.high, 1.5);
+  EXPECT_EQ(r.gpu.device.level, 0.9375);
   EXPECT_EQ(back->results[1].status, "error");
   EXPECT_FALSE(back->acceptable());
   fs::remove_all(file.parent_path().parent_path());

@@ -17,6 +17,7 @@ namespace {
 struct MergeArguments {
   std::vector<std::string> inputs;
   ReportOutputs outputs;
+  bool timing = false;
 };
 
 }  // namespace
@@ -26,6 +27,7 @@ Command add_merge_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("merge", "Join the JSON results of shards (or CI matrix jobs) into one report");
   cmd->add_option("results", args->inputs, "JSON result files written by 'shaderbed run --json'")->required();
   args->outputs.add_options(cmd);
+  cmd->add_flag("--timing", args->timing, "Show each cell's draw and build times in the table");
   return {cmd, [args] {
             RunReport merged;
             std::set<std::string> seen;
@@ -46,7 +48,7 @@ Command add_merge_command(CLI::App& app) {
               }
             }
             sort_results(merged);
-            print_table(merged, stdout);
+            print_table(merged, stdout, {.timing = args->timing});
             if (!args->outputs.write(merged)) return kExitFail;
             return merged.acceptable() ? 0 : kExitFail;
           }};

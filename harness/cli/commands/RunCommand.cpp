@@ -35,6 +35,7 @@ class Progress {
 struct RunArguments {
   RunOptions options;
   ReportOutputs outputs;
+  bool timing = false;
 };
 
 }  // namespace
@@ -61,6 +62,21 @@ Command add_run_command(CLI::App& app) {
                   "TOML file of known failures ([[known]] cells = \"case/variant/lang/backend/path/shape\", "
                   "reason = \"...\"; * matches anything): they are reported as known and do not fail the run");
   cmd->add_option("--cases-dir", run.cases_dir, "Folder of case files")->default_str(default_cases_dir());
+  cmd->add_flag("--timing", args->timing,
+                "Show each cell's draw time in the table: median and 95% confidence interval of the timed repeats "
+                "(wall clock and driver clock) and the pipeline build time (the JSON always has them)");
+  cmd->add_option("--repeat", run.timing.runs,
+                  "Timed repeats of every draw (after --warmup untimed ones); 0 = draw once, untimed")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 1000));
+  cmd->add_option("--warmup", run.timing.warmup, "Untimed repeats before the timed ones")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 100));
+  cmd->add_option("--jobs,-j", run.jobs,
+                  "Worker threads, each with its own Vulkan device and GL context; 0 = one per core. Timings are "
+                  "steadiest with --jobs 1")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 256));
 
   return {cmd, [args] {
             Progress progress;
@@ -71,7 +87,7 @@ Command add_run_command(CLI::App& app) {
               fmt::print(stderr, "shaderbed: {}\n", report.error().to_string());
               return kExitBadInput;
             }
-            print_table(*report, stdout);
+            print_table(*report, stdout, {.timing = args->timing});
             if (!args->outputs.write(*report)) return kExitFail;
             if (!options.out_dir.empty())
               fmt::print("images: {}/<case>/<variant>/<shape>/\n", std::filesystem::absolute(options.out_dir).string());
