@@ -27,9 +27,12 @@ float cosAzimuth(vec3 n, vec3 toEye, float nDotV, vec3 toLight, float nDotL)
 
 void main()
 {
+    // Renormalised: a normal a little longer than 1 puts the dots past +-1, where the clamp
+    // below turns sin(alpha) near alpha = pi into 0 (20 % error for 1e-4 of length; docs/hard-cases.md).
+    vec3 n = normalize(normal);
     vec3 toEye = normalize(eyePosition - position);
-    float nDotV = dot(normal, toEye);
-    float nDotL = dot(normal, lightDirection);
+    float nDotV = dot(n, toEye);
+    float nDotL = dot(n, lightDirection);
 
     // max(0, N.L) = 0 zeroes the colour; testing it first also keeps tan(beta) finite below.
     vec3 color = vec3(0.0);
@@ -45,7 +48,7 @@ void main()
 
         float a = 1.0 - 0.5 * roughnessSquared / (roughnessSquared + 0.33);
         float b = 0.45 * roughnessSquared / (roughnessSquared + 0.09);
-        float cosC = cosAzimuth(normal, toEye, nDotV, lightDirection, nDotL);
+        float cosC = cosAzimuth(n, toEye, nDotV, lightDirection, nDotL);
         color = diffuseColor * nDotL * (a + b * cosC * sinAlpha * tanBeta);
     }
     vertexColor = color;

@@ -20,7 +20,7 @@ struct VS_OUTPUT
 VS_OUTPUT main(const VS_INPUT InVertex)
 {
     VS_OUTPUT OutVertex;
-    float3 N = InVertex.Normal;
+    float3 N = normalize(InVertex.Normal);   // a normal past unit length breaks sin(alpha) near pi (hard cases)
     float3 VertexToEye = normalize(EyePosition - InVertex.Position.xyz);
     float VdotN = dot(VertexToEye, N);
     float LdotN = dot(LightVector, N);

@@ -1,0 +1,53 @@
+// `shaderbed hard [--case A,B] [--backend ..] [--lang ..] [--scenario ..] [--size N] [--json FILE] [--out DIR]`:
+// the hard-case suite (docs/hard-cases.md): per model, NaN/Inf counts, max relative
+// error and ULPs of the book variants and the robust one on slices and hard geometry.
+#include <fstream>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "cli/commands/Command.h"
+#include "hard/HardOutput.h"
+#include "hard/HardRunner.h"
+
+namespace shaderbed {
+
+Command add_hard_command(CLI::App& app) {
+  auto o = std::make_shared<hard::HardOptions>();
+  auto json_path = std::make_shared<std::string>();
+  CLI::App* cmd = app.add_subcommand(
+      "hard",
+      "Run the hard-case suite: parameter-space slices (one configuration per pixel) and hard geometry, on both "
+      "backends against the double reference; per model NaN/Inf counts, max relative error and ULPs of the book "
+      "variants (vertex, pixel) and the robust one (pixel_robust). Exit 1 if a row fails.");
+  cmd->add_option("--case", o->cases, "Cases to run (default: all)")->delimiter(',');
+  cmd->add_option("--backend", o->backends, "vulkan, gl (default: both)")->delimiter(',');
+  cmd->add_option("--lang", o->languages, "glsl, hlsl, cg (default: all)")->delimiter(',');
+  cmd->add_option("--scenario", o->scenarios, "Scenarios to run (default: all that apply)")->delimiter(',');
+  cmd->add_option("--cases-dir", o->cases_dir, "Folder of case files (default: the library's shaders/cases)");
+  cmd->add_option("--size", o->size, "Slice and image size in pixels (slices round up to odd)")->capture_default_str();
+  cmd->add_option("--json", *json_path, "Write the report as JSON");
+  cmd->add_option("--out", o->out_dir, "Write images (render, reference, relative error, value mask) here");
+  return {cmd, [o, json_path] {
+            o->progress = [](const std::string& step) { fmt::print(stderr, "hard: {}\n", step); };
+            auto report = hard::run_hard_cases(*o);
+            if (!report) {
+              fmt::print(stderr, "shaderbed: hard: {}\n", report.error().to_string());
+              return kExitBadInput;
+            }
+            fmt::print("{}", hard::console_report(*report));
+            if (!json_path->empty()) {
+              std::ofstream file(*json_path);
+              file << hard::json_report(*report).dump(2) << "\n";
+              if (!file) {
+                fmt::print(stderr, "shaderbed: hard: cannot write {}\n", *json_path);
+                return kExitFail;
+              }
+            }
+            for (const hard::HardRow& r : report->rows)
+              if (r.status != "pass") return kExitFail;
+            return 0;
+          }};
+}
+
+}  // namespace shaderbed

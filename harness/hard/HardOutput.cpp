@@ -1,0 +1,100 @@
+#include "hard/HardOutput.h"
+
+#include <fmt/format.h>
+
+namespace shaderbed::hard {
+namespace {
+
+std::string ulps_text(const NumericalError& e) { return e.max_ulps_pixel < 0 ? "-" : fmt::format("{}", e.max_ulps); }
+
+nlohmann::json pixel(int index, int width) {
+  if (index < 0 || width <= 0) return nullptr;
+  return {index % width, index / width};
+}
+
+}  // namespace
+
+std::string console_report(const HardReport& report) {
+  std::string out;
+  std::string current;
+  auto summary = [&](const std::string& name) {
+    for (const ModelSummary& s : report.summaries) {
+      if (s.case_name != name) continue;
+      out += fmt::format("  {} book: {} NaN/Inf ({} where the reference is finite), max rel {:.3g}, max ulps {}, {} failed",
+                         s.case_name, s.book_nonfinite, s.book_mismatch, s.book_max_relative, s.book_max_ulps,
+                         s.book_failed);
+      if (s.has_robust)
+        out += fmt::format(" | robust: {} NaN/Inf ({} where the reference is finite), max rel {:.3g}, max ulps {}, {} failed\n",
+                           s.robust_nonfinite, s.robust_mismatch, s.robust_max_relative, s.robust_max_ulps, s.robust_failed);
+      else
+        out += " | robust: not needed\n";
+    }
+  };
+  const std::string header = fmt::format("  {:<22} {:<13} {:<7} {:<5} {:<7} {:>8} {:>8} {:>11} {:>12}  {}\n", "scenario",
+                                         "variant", "kind", "lang", "backend", "NaN/Inf", "ref n/f", "max rel",
+                                         "max ulps", "status");
+  for (const HardRow& r : report.rows) {
+    if (r.case_name != current) {
+      if (!current.empty()) summary(current);
+      current = r.case_name;
+      out += fmt::format("\n{}\n{}", current, header);
+    }
+    if (r.status == "error") {
+      out += fmt::format("  {:<22} {:<13} {:<7} {:<5} {:<7} error: {}\n", r.scenario, r.variant, r.kind, r.language,
+                         r.backend, r.message);
+      continue;
+    }
+    out += fmt::format("  {:<22} {:<13} {:<7} {:<5} {:<7} {:>8} {:>8} {:>11.3g} {:>12}  {}{}\n", r.scenario, r.variant,
+                       r.kind, r.language, r.backend, r.error.render_nonfinite, r.error.reference_nonfinite,
+                       r.error.max_relative, ulps_text(r.error), r.status,
+                       r.message.empty() ? "" : " (" + r.message + ")");
+  }
+  if (!current.empty()) summary(current);
+  size_t failed = 0, errors = 0;
+  for (const HardRow& r : report.rows) (r.status == "error" ? errors : failed) += r.status != "pass";
+  out += fmt::format("\n{} rows, {} failed, {} errors, {:.1f} s (relative floor {:g}, tolerance {:g}; error not measured "
+                     "within {:g} of N.L = 0, N.V = 0, L = -V)\n",
+                     report.rows.size(), failed, errors, report.wall_ms / 1000, kRelativeErrorFloor,
+                     kRelativeTolerance, kConditioningMargin);
+  return out;
+}
+
+nlohmann::json json_report(const HardReport& report) {
+  nlohmann::json j;
+  j["size"] = report.size;
+  j["wall_ms"] = report.wall_ms;
+  j["relative_floor"] = kRelativeErrorFloor;
+  j["relative_tolerance"] = kRelativeTolerance;
+  j["conditioning_margin"] = kConditioningMargin;
+  j["scenarios"] = nlohmann::json::object();
+  for (const auto& [name, probes] : report.scenario_probes) j["scenarios"][name] = probes;
+  j["rows"] = nlohmann::json::array();
+  for (const HardRow& r : report.rows) {
+    const NumericalError& e = r.error;
+    const int width = r.width;
+    j["rows"].push_back({{"case", r.case_name}, {"scenario", r.scenario}, {"variant", r.variant}, {"kind", r.kind},
+                         {"language", r.language}, {"backend", r.backend}, {"path", r.path}, {"status", r.status},
+                         {"message", r.message}, {"pixels", e.pixels}, {"measured_pixels", e.measured_pixels},
+                         {"nan", e.render_nan}, {"inf", e.render_inf}, {"nonfinite", e.render_nonfinite},
+                         {"reference_nonfinite", e.reference_nonfinite}, {"nonfinite_mismatch", e.nonfinite_mismatch},
+                         {"max_relative", e.max_relative}, {"max_relative_pixel", pixel(e.max_relative_pixel, width)},
+                         {"max_ulps", e.max_ulps}, {"max_ulps_pixel", pixel(e.max_ulps_pixel, width)}});
+  }
+  j["models"] = nlohmann::json::array();
+  for (const ModelSummary& s : report.summaries) {
+    auto side = [](size_t nonfinite, size_t mismatch, double rel, uint64_t ulps, size_t failed) {
+      return nlohmann::json{{"nonfinite", nonfinite}, {"nonfinite_mismatch", mismatch}, {"max_relative", rel},
+                            {"max_ulps", ulps}, {"failed_rows", failed}};
+    };
+    j["models"].push_back(
+        {{"case", s.case_name},
+         {"robust", s.has_robust ? "present" : "not needed"},
+         {"book", side(s.book_nonfinite, s.book_mismatch, s.book_max_relative, s.book_max_ulps, s.book_failed)},
+         {"robust_variant", s.has_robust ? side(s.robust_nonfinite, s.robust_mismatch, s.robust_max_relative,
+                                                s.robust_max_ulps, s.robust_failed)
+                                         : nlohmann::json(nullptr)}});
+  }
+  return j;
+}
+
+}  // namespace shaderbed::hard

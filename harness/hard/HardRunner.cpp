@@ -1,0 +1,309 @@
+#include "hard/HardRunner.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "backends/Backend.h"
+#include "cli/run/CaseUniforms.h"
+#include "cli/run/ReferenceRender.h"
+#include "cli/run/Runner.h"
+#include "compare/ImageComparison.h"
+#include "compare/ImageFiles.h"
+#include "compile/Compiler.h"
+#include "hard/Scenarios.h"
+#include "hard/Slice.h"
+#include "reference/ModelRegistry.h"
+#include "reference/Reference.h"
+#include "scene/CaseFile.h"
+#include "scene/CaseProgram.h"
+#include "scene/NameFilter.h"
+
+namespace shaderbed::hard {
+namespace fs = std::filesystem;
+namespace {
+
+using Clock = std::chrono::steady_clock;
+const std::vector<std::string> kBookVariants = {"vertex", "pixel"};
+const std::string kRobustVariant = "pixel_robust";
+
+struct BackendSlot {
+  std::string name;
+  Result<std::unique_ptr<Backend>> backend = fail("backend", "not started");
+};
+
+// The double reference of one scenario, and how each pixel is judged.
+struct ScenarioReference {
+  int width = 0, height = 0;
+  std::vector<double> rgba;
+  std::vector<PixelJudgement> judgement;
+};
+
+bool point_light(const std::string& model) {
+  const reference::ModelInfo* info = reference::find_model(model);
+  return info && (info->light == reference::LightUse::point || info->light == reference::LightUse::spot);
+}
+
+// Per pixel the model at the configuration the GPU sees. A per-vertex variant shades the
+// quad's corners and the pixel centre lies on the diagonal 0-2, so its colour there is
+// the mean of those two corners' colours.
+ScenarioReference slice_reference(const Slice& slice, const Case& c, const std::map<std::string, std::vector<double>>& params,
+                                  LightingMode mode) {
+  ScenarioReference r{slice.width, slice.height, std::vector<double>(slice.pixels.size() * 4, 0.0),
+                      std::vector<PixelJudgement>(slice.pixels.size(), PixelJudgement::measured)};
+  const bool point = point_light(c.model);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (size_t i = 0; i < slice.pixels.size(); ++i) {
+    const reference::Configuration config = pixel_configuration(slice, slice.pixels[i], point);
+    std::expected<glm::dvec3, std::string> rgb;
+    if (mode == LightingMode::per_pixel) {
+      rgb = reference::evaluate(c.model, params, config);
+    } else {
+      const glm::dvec3 a(slice.mesh.vertices[i * 4].position), b(slice.mesh.vertices[i * 4 + 2].position);
+      auto ca = reference::evaluate(c.model, params, pixel_configuration(slice, slice.pixels[i], point, &a));
+      auto cb = reference::evaluate(c.model, params, pixel_configuration(slice, slice.pixels[i], point, &b));
+      rgb = ca && cb ? std::expected<glm::dvec3, std::string>(0.5 * (*ca + *cb)) : std::unexpected(std::string("undefined"));
+    }
+    const glm::dvec3 value = rgb ? *rgb : glm::dvec3(nan);   // d = 0: no value exists
+    r.rgba[i * 4 + 0] = value.x;
+    r.rgba[i * 4 + 1] = value.y;
+    r.rgba[i * 4 + 2] = value.z;
+    r.rgba[i * 4 + 3] = 1;
+    const double length_l = glm::length(config.to_light);
+    if (!rgb || length_l == 0) {
+      r.judgement[i] = PixelJudgement::undefined;
+      continue;
+    }
+    const glm::dvec3 n = glm::normalize(config.normal), l = config.to_light / length_l,
+                     v = glm::normalize(config.to_eye);
+    if (std::abs(glm::dot(n, l)) < kConditioningMargin || std::abs(glm::dot(n, v)) < kConditioningMargin ||
+        glm::length(l + v) < kConditioningMargin)
+      r.judgement[i] = PixelJudgement::finite_only;
+  }
+  return r;
+}
+
+ScenarioReference mesh_reference(const ReferenceImage& ref) {
+  ScenarioReference r{ref.width, ref.height, ref.rgba, {}};
+  for (PixelClass c : classify_pixels(ref))
+    r.judgement.push_back(c == PixelClass::interior     ? PixelJudgement::measured
+                          : c == PixelClass::silhouette ? PixelJudgement::finite_only
+                                                        : PixelJudgement::skipped);
+  return r;
+}
+
+Result<std::vector<Case>> select_cases(const HardOptions& o) {
+  auto files = list_case_files(o.cases_dir.empty() ? default_cases_dir() : o.cases_dir);
+  if (!files) return std::unexpected(files.error());
+  std::vector<std::string> names;
+  for (const std::string& f : *files) names.push_back(fs::path(f).stem().string());
+  if (auto ok = check_names(o.cases, names, "case"); !ok) return std::unexpected(ok.error());
+  if (auto ok = check_names(o.backends, {"vulkan", "gl"}, "backend"); !ok) return std::unexpected(ok.error());
+  if (auto ok = check_names(o.languages, {"glsl", "hlsl", "cg"}, "language"); !ok) return std::unexpected(ok.error());
+  if (auto ok = check_names(o.scenarios, scenario_names(), "scenario"); !ok) return std::unexpected(ok.error());
+  if (o.size < 8 || o.size > 1024) return fail("options", fmt::format("--size {} is outside 8..1024", o.size));
+  std::vector<Case> cases;
+  for (const std::string& f : *files) {
+    if (!wanted(o.cases, fs::path(f).stem().string())) continue;
+    auto c = load_case(f);
+    if (!c) return std::unexpected(c.error());
+    cases.push_back(std::move(*c));
+  }
+  return cases;
+}
+
+Image to_image(const ScenarioReference& r) {
+  Image image(r.width, r.height);
+  for (size_t i = 0; i < r.rgba.size(); ++i) image.rgba[i] = float(r.rgba[i]);
+  for (size_t i = 0; i < r.judgement.size(); ++i) image.coverage[i] = r.judgement[i] != PixelJudgement::skipped;
+  return image;
+}
+
+// Relative error per channel (the NumericalError definition), a mismatched non-finite as 1e30.
+Image relative_error_image(const Image& render, const ScenarioReference& r, double floor) {
+  Image out(r.width, r.height);
+  for (size_t i = 0; i < r.judgement.size(); ++i) {
+    out.coverage[i] = r.judgement[i] != PixelJudgement::skipped;
+    for (int c = 0; c < 3; ++c) {
+      const double e = relative_error(render.rgba[i * 4 + c], r.rgba[i * 4 + c], floor);
+      out.rgba[i * 4 + c] = std::isfinite(e) ? float(e) : 1e30f;
+    }
+    out.rgba[i * 4 + 3] = 1;
+  }
+  return out;
+}
+
+class HardRunner {
+ public:
+  HardRunner(const HardOptions& o, std::vector<BackendSlot>& backends) : o_(o), backends_(backends) {}
+
+  void run_case(const Case& c, HardReport& report) {
+    std::vector<const Variant*> variants;
+    for (const Variant& v : c.variants)
+      if (std::find(kBookVariants.begin(), kBookVariants.end(), v.name) != kBookVariants.end() || v.name == kRobustVariant)
+        variants.push_back(&v);
+    for (Scenario& s : scenarios_for(c.model, o_.size)) {
+      if (!wanted(o_.scenarios, s.name)) continue;
+      if (!report.scenario_probes.contains(s.name)) {
+        report.scenarios.push_back(s.name);
+        report.scenario_probes[s.name] = s.probes;
+      }
+      if (o_.progress) o_.progress(fmt::format("{} / {}", c.name, s.name));
+      Case scenario_case = c;
+      for (const auto& [name, value] : s.params)
+        if (scenario_case.params.contains(name)) scenario_case.params[name] = value;
+      run_scenario(scenario_case, s, variants, report);
+    }
+  }
+
+ private:
+  void run_scenario(const Case& c, Scenario& s, const std::vector<const Variant*>& variants, HardReport& report) {
+    std::optional<Slice> slice;
+    if (s.slice) slice = make_slice(*s.slice, o_.size);
+    std::map<LightingMode, Result<ScenarioReference>> refs;   // per lighting mode
+    const fs::path dir = o_.out_dir.empty() ? fs::path() : fs::path(o_.out_dir) / c.name / s.name;
+    if (!dir.empty()) {
+      std::error_code ignored;
+      fs::create_directories(dir, ignored);
+    }
+
+    for (const Variant* v : variants) {
+      const Result<ScenarioReference>* ref = nullptr;
+      const Mesh* mesh = slice ? &slice->mesh : &s.mesh->mesh;
+      if (!refs.contains(v->mode)) {
+        if (slice) {
+          refs.emplace(v->mode, slice_reference(*slice, c, c.params, v->mode));
+        } else {
+          s.mesh->scene.width = s.mesh->scene.height = o_.size;
+          auto r = render_reference(s.mesh->mesh, s.mesh->scene, c, v->mode);
+          refs.emplace(v->mode, r ? Result<ScenarioReference>(mesh_reference(*r))
+                                  : Result<ScenarioReference>(std::unexpected(r.error())));
+        }
+      }
+      ref = &refs.at(v->mode);
+      if (*ref && !dir.empty()) (void)write_png((dir / (v->name + ".reference.png")).string(), to_image(**ref));
+      NamedValues values = slice ? slice->uniforms : bindable_values(s.mesh->scene, c.params);
+      if (slice)
+        for (const auto& [name, value] : c.params) values.try_emplace(name, std::vector<float>(value.begin(), value.end()));
+
+      for (const auto& [language, files] : v->shaders) {
+        if (!wanted(o_.languages, to_string(language))) continue;
+        for (BackendSlot& b : backends_) {
+          HardRow row{.case_name = c.name, .scenario = s.name, .variant = v->name,
+                      .kind = v->name == kRobustVariant ? "robust" : "book", .language = to_string(language),
+                      .backend = b.name};
+          auto ok = render_row(c, *v, language, files, b, *mesh, values, ref, dir, row);
+          if (!ok) {
+            row.status = "error";
+            row.message = ok.error().to_string();
+          }
+          report.rows.push_back(std::move(row));
+        }
+      }
+    }
+  }
+
+  Result<void> render_row(const Case& c, const Variant& v, Language language, const ShaderFiles& files, BackendSlot& b,
+                          const Mesh& mesh, const NamedValues& values, const Result<ScenarioReference>* ref,
+                          const fs::path& dir, HardRow& row) {
+    if (!b.backend) return std::unexpected(Error(b.backend.error()).in_backend(b.name));
+    const CompiledProgram* program = nullptr;
+    if (auto p = program_for(c, v, language, files); !p) return std::unexpected(p.error());
+    else program = *p;
+    if (!*ref) return std::unexpected(ref->error());
+    const ScenarioReference& reference = **ref;
+
+    const std::vector<ShaderPath> paths = (*b.backend)->paths(language);
+    if (paths.empty()) return fail(b.name, "no shader path for " + std::string(to_string(language)));
+    row.path = to_string(paths.front());
+    auto bindings = c.bindings.find(language);
+    static const BindingTable no_bindings;
+    CaseUniforms uniforms(bindings == c.bindings.end() ? no_bindings : bindings->second, values, c.path);
+    auto rendered = (*b.backend)->render(DrawJob{*program, paths.front(), mesh, uniforms, reference.width, reference.height, nullptr});
+    if (!rendered) return std::unexpected(Error(rendered.error()).in_backend(b.name + "/" + row.path));
+
+    row.width = reference.width;
+    row.error = numerical_error(rendered->image, reference.rgba, reference.judgement);
+    const bool finite_ok = row.error.nonfinite_mismatch == 0;
+    const bool error_ok = row.error.max_relative <= kRelativeTolerance;
+    row.status = finite_ok && error_ok ? "pass" : "fail";
+    if (!finite_ok) row.message = fmt::format("{} pixels NaN/Inf on one side only", row.error.nonfinite_mismatch);
+    if (!error_ok)
+      row.message += fmt::format("{}max relative error {:.3g} > {:g}", row.message.empty() ? "" : "; ",
+                                 row.error.max_relative, kRelativeTolerance);
+    if (!dir.empty()) {
+      const std::string stem = fmt::format("{}-{}-{}", v.name, row.language, row.backend);
+      for (auto written : {write_png((dir / (stem + ".png")).string(), rendered->image),
+                           // Relative error: the pass tolerance shows as mid grey.
+                           write_png((dir / (stem + ".error.png")).string(),
+                                     relative_error_image(rendered->image, reference, row.error.floor),
+                                     float(0.5 / kRelativeTolerance)),
+                           write_png((dir / (stem + ".values.png")).string(), value_mask(rendered->image))})
+        if (!written) return std::unexpected(written.error());
+    }
+    return {};
+  }
+
+  Result<const CompiledProgram*> program_for(const Case& c, const Variant& v, Language language, const ShaderFiles& files) {
+    const std::string key = c.name + "/" + v.name + "/" + to_string(language);
+    auto it = programs_.find(key);
+    if (it == programs_.end()) {
+      auto source = load_case_program(language, files, c.path);
+      it = programs_.emplace(key, source ? compile_program(*source) : std::unexpected(source.error())).first;
+    }
+    if (!it->second) return std::unexpected(it->second.error());
+    return &*it->second;
+  }
+
+  const HardOptions& o_;
+  std::vector<BackendSlot>& backends_;
+  std::map<std::string, Result<CompiledProgram>> programs_;
+};
+
+void summarise(HardReport& report) {
+  std::map<std::string, ModelSummary> by_case;
+  std::vector<std::string> order;
+  for (const HardRow& r : report.rows) {
+    if (!by_case.contains(r.case_name)) order.push_back(r.case_name);
+    ModelSummary& s = by_case[r.case_name];
+    s.case_name = r.case_name;
+    const bool robust = r.kind == "robust";
+    s.has_robust |= robust;
+    (robust ? s.robust_nonfinite : s.book_nonfinite) += r.error.render_nonfinite;
+    (robust ? s.robust_mismatch : s.book_mismatch) += r.error.nonfinite_mismatch;
+    double& rel = robust ? s.robust_max_relative : s.book_max_relative;
+    rel = std::max(rel, r.error.max_relative);
+    uint64_t& ulps = robust ? s.robust_max_ulps : s.book_max_ulps;
+    ulps = std::max(ulps, r.error.max_ulps);
+    if (r.status != "pass") ++(robust ? s.robust_failed : s.book_failed);
+  }
+  for (const std::string& name : order) report.summaries.push_back(by_case.at(name));
+}
+
+}  // namespace
+
+Result<HardReport> run_hard_cases(const HardOptions& o) {
+  const auto start = Clock::now();
+  auto cases = select_cases(o);
+  if (!cases) return std::unexpected(cases.error());
+  std::vector<BackendSlot> backends;
+  for (const char* name : {"vulkan", "gl"})
+    if (wanted(o.backends, name))
+      backends.push_back({name, std::string(name) == "vulkan" ? make_vulkan_backend() : make_gl_backend()});
+
+  HardReport report;
+  report.size = o.size | 1;
+  HardRunner runner(o, backends);
+  for (const Case& c : *cases) runner.run_case(c, report);
+  if (report.rows.empty()) return fail("options", "the filters select nothing to run");
+  summarise(report);
+  report.wall_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  return report;
+}
+
+}  // namespace shaderbed::hard

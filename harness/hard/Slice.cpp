@@ -1,0 +1,144 @@
+#include "hard/Slice.h"
+
+#include <cmath>
+#include <numbers>
+
+#include <glm/gtc/type_ptr.hpp>
+
+namespace shaderbed::hard {
+namespace {
+
+constexpr double pi = std::numbers::pi;
+
+// A unit vector perpendicular to `axis`, toward `hint` when it is not along the axis.
+glm::dvec3 perpendicular(const glm::dvec3& axis, const glm::dvec3& hint) {
+  glm::dvec3 p = hint - axis * glm::dot(axis, hint);
+  if (glm::dot(p, p) < 1e-20) {
+    const glm::dvec3 other = std::abs(axis.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+    p = other - axis * glm::dot(axis, other);
+  }
+  return glm::normalize(p);
+}
+
+glm::dvec3 uniform3(const NamedValues& u, const char* name) {
+  const std::vector<float>& v = u.at(name);
+  return {v[0], v[1], v[2]};
+}
+
+std::vector<float> floats4(const glm::dvec3& v, double w) { return {float(v.x), float(v.y), float(v.z), float(w)}; }
+
+}  // namespace
+
+const char* to_string(NormalLayout l) {
+  switch (l) {
+    case NormalLayout::sphere: return "sphere";
+    case NormalLayout::lobe: return "lobe";
+    case NormalLayout::plane: return "plane";
+  }
+  return "?";
+}
+
+Slice make_slice(const SliceSpec& spec, int size) {
+  Slice s;
+  s.spec = spec;
+  s.width = s.height = size | 1;
+  const int w = s.width, h = s.height;
+  const glm::dvec3 v = glm::normalize(spec.to_eye);
+  const glm::dvec3 l = glm::normalize(spec.to_light);
+  // Sphere frame: e3 = V, e1 toward L's projection, e2 = e3 x e1.
+  const glm::dvec3 e1 = perpendicular(v, l), e2 = glm::cross(v, e1);
+  // Lobe frame around H (H undefined for L = -V: take V).
+  const glm::dvec3 sum = l + v;
+  const glm::dvec3 half = glm::dot(sum, sum) > 1e-20 ? glm::normalize(sum) : v;
+  const glm::dvec3 h1 = perpendicular(half, l), h2 = glm::cross(half, h1);
+  const glm::dvec3 plane_n = glm::normalize(spec.plane_normal);
+  const glm::dvec3 plane_t = perpendicular(plane_n, glm::dvec3(1, 0, 0));
+
+  s.pixels.resize(size_t(w) * h);
+  s.mesh.name = std::string("slice-") + to_string(spec.layout);
+  s.mesh.vertices.reserve(s.pixels.size() * 4);
+  s.mesh.indices.reserve(s.pixels.size() * 6);
+  const double sx = 2.0 / w, sy = 2.0 / h;   // pixel size in clip space
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      SlicePixel& p = s.pixels[size_t(y) * w + x];
+      glm::dvec3 n, t;
+      switch (spec.layout) {
+        case NormalLayout::sphere: {
+          p.polar = pi * y / (h - 1);
+          p.azimuth = -pi + 2 * pi * x / (w - 1);
+          const glm::dvec3 radial = std::cos(p.azimuth) * e1 + std::sin(p.azimuth) * e2;
+          n = std::sin(p.polar) * radial + std::cos(p.polar) * v;
+          t = -std::sin(p.azimuth) * e1 + std::cos(p.azimuth) * e2;   // along increasing azimuth, perpendicular to N
+          break;
+        }
+        case NormalLayout::lobe: {
+          const double k = std::tan(spec.lobe_radius);
+          const double u = k * (2.0 * x / (w - 1) - 1), vv = k * (1 - 2.0 * y / (h - 1));
+          n = glm::normalize(half + u * h1 + vv * h2);
+          t = perpendicular(n, h1);
+          break;
+        }
+        case NormalLayout::plane:
+          n = plane_n;
+          t = plane_t;
+          break;
+      }
+      p.claimed_normal = n;
+      double length = 1;
+      if (spec.long_normals) length += std::pow(10.0, -6 + (x + y) % 3);
+      p.normal = glm::vec3(n * length);
+      p.tangent = glm::vec3(t);
+
+      // The quad covering the pixel; its centre is the pixel centre.
+      const double cx = -1 + sx * (x + 0.5), cy = 1 - sy * (y + 0.5);
+      p.position = kGridHalfSize * glm::dvec3(cx, cy, 0);
+      const uint32_t first = uint32_t(s.mesh.vertices.size());
+      for (const auto& [dx, dy] : {std::pair{-0.5, 0.5}, {0.5, 0.5}, {0.5, -0.5}, {-0.5, -0.5}}) {
+        const glm::vec3 corner(kGridHalfSize * glm::dvec3(cx + dx * sx, cy + dy * sy, 0));
+        s.mesh.vertices.push_back({corner, p.normal, p.tangent, glm::vec2(0)});
+      }
+      for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) s.mesh.indices.push_back(first + i);
+    }
+
+  // clip = (x / g, y / g, 0.5, 1): the grid fills the screen at depth 0.5.
+  glm::dmat4 transform(1.0);
+  transform[0][0] = transform[1][1] = 1 / kGridHalfSize;
+  transform[2][2] = 0;
+  transform[3][2] = 0.5;
+  const double* m = glm::value_ptr(transform);
+  s.uniforms["transform"] = std::vector<float>(m, m + 16);
+  const double* identity = glm::value_ptr(glm::dmat4(1.0));
+  s.uniforms["world"] = std::vector<float>(identity, identity + 16);
+  s.uniforms["eye_position"] = floats4(kEyeDistance * v, 1);
+  if (spec.layout == NormalLayout::plane) {
+    // The spot (and Warn light) shines along -light_vector = -N: the centre pixel is on its axis.
+    s.uniforms["light_vector"] = floats4(plane_n, 0);
+    s.uniforms["light_position"] = floats4(spec.light_height * plane_n, 1);
+  } else {
+    s.uniforms["light_vector"] = floats4(l, 0);
+    s.uniforms["light_position"] = floats4(kLightDistance * l, 1);
+  }
+  return s;
+}
+
+reference::Configuration pixel_configuration(const Slice& slice, const SlicePixel& pixel, bool point_light,
+                                             const glm::dvec3* at) {
+  const glm::dvec3 position = at ? *at : pixel.position;
+  reference::Configuration c;
+  c.normal = glm::dvec3(pixel.normal);
+  c.tangent = glm::dvec3(pixel.tangent);
+  c.to_eye = uniform3(slice.uniforms, "eye_position") - position;
+  const glm::dvec3 light_vector = uniform3(slice.uniforms, "light_vector");
+  if (point_light) {
+    const glm::dvec3 to_light = uniform3(slice.uniforms, "light_position") - position;
+    c.distance = glm::length(to_light);
+    c.to_light = to_light;
+    c.spot_axis = -light_vector;
+  } else {
+    c.to_light = light_vector;
+  }
+  return c;
+}
+
+}  // namespace shaderbed::hard
