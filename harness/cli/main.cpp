@@ -9,7 +9,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   const shaderbed::Command commands[] = {shaderbed::add_run_command(app), shaderbed::add_eval_command(app),
                                           shaderbed::add_merge_command(app),
-                                          shaderbed::add_stats_command(app),
+                                          shaderbed::add_stats_command(app), shaderbed::add_sweep_command(app),
                                           shaderbed::add_hard_command(app)};
   try {
     app.parse(argc, argv);

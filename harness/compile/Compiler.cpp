@@ -7,6 +7,7 @@
 #include "compile/GlslangFrontEnd.h"
 #include "compile/SpirvReflection.h"
 #include "compile/SpirvTools.h"
+#include "compile/StageCache.h"
 
 namespace shaderbed {
 
@@ -54,7 +55,7 @@ Result<CompiledProgram> compile_program(const ProgramSource& p) {
   };
   for (Job job : {Job{p.vertex, Target::vulkan, out.vertex}, Job{p.fragment, Target::vulkan, out.fragment},
                   Job{p.vertex, Target::opengl, out.vertex_gl}, Job{p.fragment, Target::opengl, out.fragment_gl}}) {
-    auto module = compile_stage(p.language, job.src, job.target);
+    auto module = compile_stage_cached(p.language, job.src, job.target);
     if (!module) return std::unexpected(module.error());
     job.dst = std::move(*module);
   }

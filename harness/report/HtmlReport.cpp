@@ -369,6 +369,15 @@ class Writer {
 
   static constexpr int kColumns = 16;
 
+  std::string charts_section() const {
+    if (options_.charts.empty()) return "";
+    std::string h = "<section id=\"charts\"><h2>Speed against error</h2>\n";
+    for (const HtmlChart& c : options_.charts)
+      h += fmt::format("<figure class=\"chart\"><figcaption><b>{}</b> {}</figcaption>\n{}\n</figure>\n", escape(c.title),
+                       escape(c.caption), c.svg);
+    return h + "</section>\n";
+  }
+
   std::string failure_section(const char* k, const char* title, size_t open_limit) const {
     std::vector<size_t> cells;
     for (size_t i = 0; i < report_.results.size(); ++i)
@@ -436,8 +445,10 @@ class Writer {
       for (const CellResult& r : report_.results) n += kind(r) == k;
       if (n) nav += fmt::format("<a href=\"#sec-{}\">{} ({})</a>", k, title, n);
     }
+    if (!options_.charts.empty()) nav = "<a href=\"#charts\">speed against error</a>" + nav;
     h += "<nav>" + nav + "<a href=\"#all\">all cells</a></nav>\n";
     h += "</header>\n<main>\n";
+    h += charts_section();
 
     h += failure_section("fail", "Failures", 40);
     h += failure_section("error", "Errors", 20);
@@ -482,6 +493,7 @@ class Writer {
   }
 
   static constexpr const char* kCss = R"css(
+figure.chart{margin:0 0 1.5em 0;max-width:1000px}figure.chart svg{width:100%;height:auto;background:#fff}
 body{font:14px/1.4 system-ui,-apple-system,"Segoe UI",sans-serif;margin:0;color:#1d1f23;background:#fafafa}
 header{padding:12px 20px;background:#fff;border-bottom:1px solid #ddd}
 h1{margin:0 0 8px;font-size:20px} h2{font-size:16px;margin:18px 0 8px}

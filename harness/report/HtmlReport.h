@@ -1,6 +1,7 @@
 #pragma once
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "core/Error.h"
 #include "report/Results.h"
@@ -34,9 +35,18 @@ namespace shaderbed {
 // #status=failing|fail|known|error|pass and #filter=TEXT filter. When every shown image
 // has settled, the page sets on <body> data-images-ready="all" (or "broken"),
 // data-images-total and data-images-decoded (complete and naturalWidth > 0).
+// A chart drawn elsewhere (plot/), shown inline in a "Speed against error" section before
+// the failures. `svg` must be self-contained (no script, no external reference).
+struct HtmlChart {
+  std::string title;
+  std::string svg;
+  std::string caption;   // plain text
+};
+
 struct HtmlOptions {
   size_t image_budget = size_t(24) << 20;    // at most this many bytes of base64 image data
   size_t max_page_bytes = size_t(28) << 20;  // and index.html stays under this in total
+  std::vector<HtmlChart> charts;
 };
 
 struct HtmlSummary {

@@ -75,6 +75,7 @@ ojson cell_json(const CellResult& r) {
                     {"device", interval(r.gpu.device)},
                     {"wall", interval(r.gpu.wall)}};
   cell["spirv_hash"] = {{"vertex", r.vertex_spirv_hash}, {"fragment", r.fragment_spirv_hash}};
+  cell["instructions"] = {{"vertex", r.vertex_instructions}, {"fragment", r.fragment_instructions}};
   cell["artefacts"] = {{"render_exr", a.render_exr},         {"render_png", a.render_png},
                        {"error_exr", a.error_exr},           {"error_png", a.error_png},
                        {"reference_png", a.reference_png},   {"vertex_spirv", a.vertex_spirv},
@@ -240,6 +241,10 @@ CellResult read_cell(const json& c, const std::string& p) {
           read(*ci, "level", child(tp, "ci"), out->level);
         }
       }
+  }
+  if (const json* n = object_at(c, "instructions", p)) {
+    read(*n, "vertex", child(p, "instructions"), r.vertex_instructions);
+    read(*n, "fragment", child(p, "instructions"), r.fragment_instructions);
   }
   if (const json* h = object_at(c, "spirv_hash", p)) {
     read(*h, "vertex", child(p, "spirv_hash"), r.vertex_spirv_hash);

@@ -34,6 +34,7 @@ namespace shaderbed {
 //               "device": {"median", "ci": {"low", "high", "level"}},   (driver's clock)
 //               "wall": {...same...}},                                  (CPU clock per repeat)
 //    "spirv_hash": {"vertex", "fragment"},
+//    "instructions": {"vertex", "fragment"},   (SPIR-V function-body instructions as drawn)
 //    "artefacts": {"render_exr", "render_png", "error_exr", "error_png", "reference_png",
 //                  "vertex_spirv", "fragment_spirv", "vertex_cross_glsl", "fragment_cross_glsl"},
 //    "image": render_exr                      (v1 alias, only when set; ignored on read)

@@ -89,6 +89,8 @@ struct CellResult {
   bool program_cached = false;
   GpuTiming gpu;
   std::string vertex_spirv_hash, fragment_spirv_hash;   // hex FNV-1a 64 of the driver SPIR-V
+  // Function-body instructions of the driver SPIR-V (stats::count_spirv), per stage.
+  int vertex_instructions = 0, fragment_instructions = 0;
   CellArtefacts artefacts;
 
   std::string id() const {          // stable identity: sharding, expectations, merging

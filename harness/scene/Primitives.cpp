@@ -1,5 +1,6 @@
 #include "scene/Primitives.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -131,6 +132,15 @@ std::optional<Mesh> make_shape(const std::string& name, Tessellation t) {
   if (name == "cube") return solid_cube(35.0f, high ? 8 : 1);
   if (name == "cone") return solid_cone(20.0f, 40.0f, high ? 64 : 16, high ? 32 : 8);
   if (name == "torus") return solid_torus(8.0f, 22.0f, high ? 32 : 12, high ? 64 : 24);
+  return std::nullopt;
+}
+
+std::optional<Mesh> make_shape(const std::string& name, int slices) {
+  if (slices < 4) return std::nullopt;
+  if (name == "sphere") return solid_sphere(25.0f, slices, slices / 2);
+  if (name == "cube") return solid_cube(35.0f, std::max(1, slices / 8));
+  if (name == "cone") return solid_cone(20.0f, 40.0f, slices, slices / 2);
+  if (name == "torus") return solid_torus(8.0f, 22.0f, slices / 2, slices);
   return std::nullopt;
 }
 

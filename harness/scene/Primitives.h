@@ -24,6 +24,10 @@ enum class Tessellation { low, high };
 
 // The shaderbed scene's shapes at the size the book's camera frames well.
 std::optional<Mesh> make_shape(const std::string& name, Tessellation tessellation);
+// The same shapes at any density, for tessellation sweeps: sphere and cone with `slices`
+// slices and slices/2 stacks, torus with slices/2 sides and `slices` rings, cube with
+// slices/8 subdivisions per edge (at least 1). slices >= 4.
+std::optional<Mesh> make_shape(const std::string& name, int slices);
 const std::vector<std::string>& shape_names();   // sphere, cube, cone, torus
 
 }  // namespace shaderbed

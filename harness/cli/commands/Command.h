@@ -20,6 +20,7 @@ Command add_run_command(CLI::App& app);
 Command add_eval_command(CLI::App& app);
 Command add_merge_command(CLI::App& app);
 Command add_stats_command(CLI::App& app);
+Command add_sweep_command(CLI::App& app);
 Command add_hard_command(CLI::App& app);
 
 }  // namespace shaderbed

@@ -9,6 +9,7 @@
 #include <mutex>
 #include <regex>
 #include <thread>
+#include <tuple>
 
 #include <fmt/format.h>
 
@@ -25,6 +26,7 @@
 #include "compare/ImageComparison.h"
 #include "compare/ImageFiles.h"
 #include "compile/Compiler.h"
+#include "compile/RelaxedPrecision.h"
 #include "compile/ToolVersions.h"
 #include "lut/LookupTexture.h"
 #include "lut/LutTolerance.h"
@@ -33,6 +35,7 @@
 #include "scene/NameFilter.h"
 #include "scene/Primitives.h"
 #include "scene/ProjectedArea.h"
+#include "stats/SpirvCounts.h"
 #include "timing/MedianInterval.h"
 
 namespace shaderbed {
@@ -77,6 +80,15 @@ std::string llvm_version(const std::string& driver) {
   return std::regex_search(driver, m, llvm) ? m[1].str() : "";
 }
 
+Result<ProgramSource> relaxed(ProgramSource source) {
+  for (ShaderSource* stage : {&source.vertex, &source.fragment}) {
+    auto relaxed = relax_precision(source.language, std::move(*stage));
+    if (!relaxed) return std::unexpected(relaxed.error());
+    *stage = std::move(*relaxed);
+  }
+  return source;
+}
+
 GpuTiming gpu_timing(const RenderTimings& t, const TimingRequest& request) {
   const auto interval = [](const std::vector<double>& ms) {
     const MedianInterval m = median_interval(ms);
@@ -91,6 +103,7 @@ struct Caches {
     Result<CompiledProgram> program = fail("compile", "not compiled");
     double ms = 0;
     CellArtefacts sources;   // disassembly and cross GLSL paths
+    std::pair<int, int> instructions{0, 0};   // vertex, fragment
   };
   std::map<std::string, Program> programs;                   // case/variant/language
   std::map<std::string, Mesh> meshes;                        // shape/tessellation
@@ -105,8 +118,11 @@ class GroupRunner {
   // Runs one case x variant x shape: every language, backend and path.
   std::vector<CellResult> run(const CellGroup& g) {
     const Case& c = *g.c;
-    const std::string mesh_key = g.shape + (c.tessellation == Tessellation::high ? "/high" : "/low");
-    if (!caches_.meshes.contains(mesh_key)) caches_.meshes.emplace(mesh_key, *make_shape(g.shape, c.tessellation));
+    const std::string mesh_key = g.shape + (o_.mesh_slices > 0 ? "/" + std::to_string(o_.mesh_slices)
+                                            : c.tessellation == Tessellation::high ? "/high" : "/low");
+    if (!caches_.meshes.contains(mesh_key))
+      caches_.meshes.emplace(mesh_key, *(o_.mesh_slices > 0 ? make_shape(g.shape, o_.mesh_slices)
+                                                              : make_shape(g.shape, c.tessellation)));
     const Mesh& mesh = caches_.meshes.at(mesh_key);
     const fs::path dir = o_.out_dir.empty() ? fs::path() : fs::path(o_.out_dir) / c.name / g.variant->name / g.shape;
 
@@ -118,7 +134,8 @@ class GroupRunner {
     area_ = caches_.areas.at(mesh_key);
 
     const auto t0 = Clock::now();
-    const Result<ReferenceImage> reference = render_reference(mesh, scene_, c, g.variant->mode);
+    const Result<ReferenceImage> reference =
+        render_reference(mesh, scene_, c, o_.per_pixel_reference ? LightingMode::per_pixel : g.variant->mode);
     const double reference_ms = ms_since(t0);
     if (reference && !dir.empty()) write_reference(*reference, dir);
 
@@ -208,7 +225,13 @@ class GroupRunner {
     Caches::Program entry;
     const auto t0 = Clock::now();
     auto source = load_case_program(language, g.variant->shaders.at(language), g.c->path);
+    if (source && o_.relaxed_precision) source = relaxed(std::move(*source));
     entry.program = source ? compile_program(*source) : std::unexpected(source.error());
+    if (entry.program) {
+      auto vertex = stats::count_spirv(entry.program->vertex.spirv);
+      auto fragment = stats::count_spirv(entry.program->fragment.spirv);
+      if (vertex && fragment) entry.instructions = {vertex->total, fragment->total};
+    }
     entry.ms = ms_since(t0);
     if (entry.program && !o_.out_dir.empty())
       (void)write_program_artefacts((fs::path(o_.out_dir) / g.c->name / g.variant->name).string(), *entry.program,
@@ -226,6 +249,7 @@ class GroupRunner {
     r.artefacts = compiled.sources;
     r.vertex_spirv_hash = spirv_hash(compiled.program->vertex.spirv);
     r.fragment_spirv_hash = spirv_hash(compiled.program->fragment.spirv);
+    std::tie(r.vertex_instructions, r.fragment_instructions) = compiled.instructions;
     if (!reference) return std::unexpected(reference.error());
     if (!lut) return std::unexpected(lut.error());
     if (!cell.backend->backend) return std::unexpected(Error(cell.backend->backend.error()).in_backend(cell.backend->name));

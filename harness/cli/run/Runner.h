@@ -29,6 +29,11 @@ struct RunOptions {
   // Whole case x variant bundles go to one worker, so each pipeline is built once.
   int jobs = 0;
   TimingRequest timing{.warmup = 1, .runs = 5};   // GPU timing of every cell's draw
+  int mesh_slices = 0;              // > 0: every shape at this density (make_shape), not the case's
+  bool relaxed_precision = false;   // compile with floats declared relaxed (compile/RelaxedPrecision.h)
+  // Judge every variant against the per-pixel model, so a per-vertex variant's error is what
+  // it loses by shading at vertices (sweeps), not how faithful its port is (the default).
+  bool per_pixel_reference = false;
   // Progress; called from the worker threads, one call at a time.
   std::function<void(size_t done, size_t total, const CellResult&)> on_cell;
 };

@@ -1,0 +1,126 @@
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "cli/commands/Command.h"
+#include "cli/run/Runner.h"
+#include "report/HtmlReport.h"
+#include "sweep/Sweep.h"
+#include "sweep/SweepOutput.h"
+
+namespace shaderbed {
+namespace {
+
+struct SweepArguments {
+  SweepOptions options;
+  std::vector<std::string> axes;
+  std::string json, chart, html;
+};
+
+std::string read_file(const std::string& path) {
+  std::ifstream f(path);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+}  // namespace
+
+Command add_sweep_command(CLI::App& app) {
+  auto args = std::make_shared<SweepArguments>();
+  SweepOptions& o = args->options;
+  CLI::App* cmd = app.add_subcommand(
+      "sweep",
+      "Render one case across a parameter space and place every variant on a speed-against-error chart: "
+      "interior RMSE and max error against the reference, draw time (median and CI of timed repeats) and "
+      "SPIR-V instruction count per point");
+  cmd->add_option("case", o.case_name, "Case name (shaders/cases/NAME.toml)")->required();
+  cmd->add_option("--param", args->axes,
+                  "An axis NAME=LO:HI:STEPS[:lin|:log] (repeatable; axes multiply). NAME is a scalar case parameter "
+                  "(lut_size, power, slope_m, ...) or 'tessellation' (shape slices). Steps are geometric when LO > 0 "
+                  "and HI/LO >= 8, else linear. Example: --param lut_size=8:256:6");
+  cmd->add_option("--precision", o.precisions,
+                  "fp32 and/or relaxed (mediump / min16float: SPIR-V RelaxedPrecision); default fp32")
+      ->delimiter(',');
+  cmd->add_option("--variant", o.variants, "Variants (default: every variant of the case)")->delimiter(',');
+  cmd->add_option("--lang", o.languages, "Languages (default: glsl, else the case's first)")->delimiter(',');
+  cmd->add_option("--backend", o.backends, "Backends: vulkan, gl (default: vulkan)")->delimiter(',');
+  cmd->add_option("--shape", o.shapes, "Shapes (default: sphere)")->delimiter(',');
+  cmd->add_option("--size", o.size, "Image width and height in pixels")->capture_default_str()->check(CLI::Range(8, 4096));
+  cmd->add_option("--repeat", o.timing.runs, "Timed draws per point")->capture_default_str()->check(CLI::Range(1, 1000));
+  cmd->add_option("--warmup", o.timing.warmup, "Untimed draws before them")->capture_default_str()->check(CLI::Range(0, 100));
+  cmd->add_option("--json", args->json, "Write the points as JSON: {\"points\": [{\"params\", \"rmse\", \"max_abs\", "
+                                        "\"time_ms\", \"instructions\", ...}]}");
+  cmd->add_option("--chart", args->chart, "Write the speed-against-error chart as STEM.png and STEM.svg (gnuplot)");
+  cmd->add_option("--html", args->html, "Write an HTML report of every cell with the chart to this folder");
+  cmd->add_option("--cases-dir", o.cases_dir, "Folder of case files")->default_str(default_cases_dir());
+
+  return {cmd, [args] {
+            SweepOptions options = args->options;
+            for (const std::string& text : args->axes) {
+              auto axis = parse_sweep_axis(text);
+              if (!axis) {
+                fmt::print(stderr, "shaderbed: {}\n", axis.error().to_string());
+                return kExitBadInput;
+              }
+              options.axes.push_back(std::move(*axis));
+            }
+            const bool tty = isatty(STDERR_FILENO);
+            options.on_step = [tty](size_t done, size_t total, const std::string& what) {
+              if (done == total) {
+                if (tty) fmt::print(stderr, "\r{:80}\r", "");
+                return;
+              }
+              if (tty) fmt::print(stderr, "\r[{}/{}] {:<60}", done + 1, total, what);
+              else fmt::print(stderr, "[{}/{}] {}\n", done + 1, total, what);
+            };
+            auto sweep = run_sweep(options);
+            if (!sweep) {
+              fmt::print(stderr, "shaderbed: {}\n", sweep.error().to_string());
+              return kExitBadInput;
+            }
+            print_sweep_table(*sweep, stdout);
+
+            std::string chart_stem = args->chart;
+            if (chart_stem.empty() && !args->html.empty())
+              chart_stem = (std::filesystem::path(args->html) / "speed_error").string();
+            Result<ChartFiles> chart = fail("sweep", "no chart asked for");
+            if (!chart_stem.empty()) {
+              chart = write_sweep_chart(*sweep, chart_stem);
+              if (!chart) {
+                fmt::print(stderr, "shaderbed: {}\n", chart.error().to_string());
+                return kExitFail;
+              }
+              fmt::print("chart: {} {}\n", chart->png, chart->svg);
+            }
+            if (!args->json.empty()) {
+              if (auto ok = write_sweep_json(*sweep, chart ? &*chart : nullptr, args->json); !ok) {
+                fmt::print(stderr, "shaderbed: {}\n", ok.error().to_string());
+                return kExitFail;
+              }
+              fmt::print("points: {}\n", args->json);
+            }
+            if (!args->html.empty()) {
+              HtmlOptions html;
+              html.charts.push_back({fmt::format("{}", sweep->case_name), read_file(chart->svg),
+                                     "draw time against interior RMSE per point; the dashed line is the Pareto front"});
+              auto written = write_html(sweep->cells, args->html, html);
+              if (!written) {
+                fmt::print(stderr, "shaderbed: {}\n", written.error().to_string());
+                return kExitFail;
+              }
+              fmt::print("html: {}\n", written->index_path);
+            }
+            const bool drawn = std::none_of(sweep->points.begin(), sweep->points.end(),
+                                            [](const SweepPoint& p) { return p.status == "error"; });
+            return drawn ? 0 : kExitFail;
+          }};
+}
+
+}  // namespace shaderbed

@@ -1,0 +1,129 @@
+#include "sweep/SweepOutput.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "report/Markup.h"
+
+namespace shaderbed {
+namespace {
+
+using ojson = nlohmann::ordered_json;
+
+// JSON has no Inf/NaN: written as strings, as the results file does.
+ojson number(double v) {
+  if (std::isnan(v)) return "nan";
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  return v;
+}
+
+std::string axis_text(const SweepPoint& p) {
+  std::string s;
+  for (const auto& [name, value] : p.axis_values) s += fmt::format("{}={} ", name, format_axis_value(value));
+  return s.empty() ? "-" : s.substr(0, s.size() - 1);
+}
+
+}  // namespace
+
+void print_sweep_table(const SweepResult& sweep, std::FILE* out) {
+  using markup::sci;
+  const std::vector<std::string> headers = {"point", "variant", "precision", "lang", "backend", "path", "shape",
+                                            "rmse", "max err", "draw ms [CI]", "driver ms", "instr", "pareto", "within tol."};
+  std::vector<std::vector<std::string>> rows;
+  for (const SweepPoint& p : sweep.points)
+    rows.push_back({axis_text(p), p.cell.at("variant"), p.cell.at("precision"), p.cell.at("language"),
+                    p.cell.at("backend"), p.cell.at("path"), p.cell.at("shape"), sci(p.rmse), sci(p.max_abs),
+                    fmt::format("{:.3f} [{:.3f}, {:.3f}]", p.time_ms, p.time_low_ms, p.time_high_ms),
+                    fmt::format("{:.3f}", p.driver_clock_ms), std::to_string(p.instructions), p.pareto ? "*" : "",
+                    p.status == "error" ? "ERROR" : p.status == "pass" ? "yes" : "no"});
+  std::vector<size_t> width(headers.size());
+  for (size_t c = 0; c < headers.size(); ++c) width[c] = headers[c].size();
+  for (const auto& row : rows)
+    for (size_t c = 0; c < row.size(); ++c) width[c] = std::max(width[c], row[c].size());
+  const auto print_row = [&](const std::vector<std::string>& row) {
+    std::string line;
+    for (size_t c = 0; c < row.size(); ++c) line += fmt::format("{:<{}}  ", row[c], width[c]);
+    while (!line.empty() && line.back() == ' ') line.pop_back();
+    fmt::print(out, "{}\n", line);
+  };
+  print_row(headers);
+  for (const auto& row : rows) print_row(row);
+  for (const SweepPoint& p : sweep.points)
+    if (p.status == "error") fmt::print(out, "\nerror at {} {}: {}\n", axis_text(p), p.cell.at("variant"), p.message);
+  fmt::print(out,
+             "\n{} points of {} at {}x{}; draw time = wall median of {} timed draws after {} warm-up (CI: the "
+             "median's, order statistics); rmse and max err over interior pixels against the per-pixel model in double; instr = SPIR-V instructions "
+             "(vertex + fragment); * = on the Pareto front of time against rmse; within tol. = within the case's "
+             "tolerance against that reference\n",
+             sweep.points.size(), sweep.case_name, sweep.size, sweep.size, sweep.timing.runs, sweep.timing.warmup);
+}
+
+std::string sweep_json(const SweepResult& sweep, const ChartFiles* chart) {
+  ojson j;
+  j["case"] = sweep.case_name;
+  j["size"] = sweep.size;
+  j["timing"] = {{"warmup", sweep.timing.warmup}, {"runs", sweep.timing.runs}};
+  ojson axes = ojson::array();
+  for (const SweepAxis& a : sweep.axes) axes.push_back({{"name", a.name}, {"values", a.values}});
+  j["axes"] = std::move(axes);
+  j["precisions"] = sweep.precisions;
+  const ToolVersions& t = sweep.cells.tools;
+  j["tools"] = {{"glslang", t.glslang}, {"spirv_tools", t.spirv_tools}, {"spirv_cross", t.spirv_cross},
+                {"llvm", t.llvm},       {"mesa", {{"vulkan", t.vulkan_driver}, {"gl", t.gl_driver}}}};
+  ojson points = ojson::array();
+  for (const SweepPoint& p : sweep.points) {
+    ojson params = ojson::object();
+    for (const auto& [name, value] : p.axis_values) params[name] = number(value);
+    for (const char* key : {"variant", "precision", "language", "backend", "path", "shape"}) params[key] = p.cell.at(key);
+    points.push_back({{"params", std::move(params)},
+                      {"rmse", number(p.rmse)},
+                      {"max_abs", number(p.max_abs)},
+                      {"time_ms", number(p.time_ms)},
+                      {"time_ci_ms", {number(p.time_low_ms), number(p.time_high_ms)}},
+                      {"driver_clock_ms", number(p.driver_clock_ms)},
+                      {"build_ms", number(p.build_ms)},
+                      {"instructions", p.instructions},
+                      {"instructions_by_stage", {{"vertex", p.vertex_instructions}, {"fragment", p.fragment_instructions}}},
+                      {"status", p.status},
+                      {"message", p.message},
+                      {"series", p.series},
+                      {"label", p.label},
+                      {"pareto", p.pareto}});
+  }
+  j["points"] = std::move(points);
+  if (chart) j["chart"] = {{"png", chart->png}, {"svg", chart->svg}};
+  return j.dump(2) + "\n";
+}
+
+Result<void> write_sweep_json(const SweepResult& sweep, const ChartFiles* chart, const std::string& path) {
+  std::error_code ec;
+  if (const auto parent = std::filesystem::path(path).parent_path(); !parent.empty())
+    std::filesystem::create_directories(parent, ec);
+  std::ofstream f(path);
+  if (f) f << sweep_json(sweep, chart);
+  if (!f) return fail("sweep", "cannot write " + path);
+  return {};
+}
+
+Result<ChartFiles> write_sweep_chart(const SweepResult& sweep, const std::string& out_stem) {
+  std::vector<ChartPoint> points;
+  for (const SweepPoint& p : sweep.points)
+    if (p.status != "error") points.push_back({p.label, p.series, p.time_ms, p.rmse});
+  if (points.empty()) return fail("sweep", "no point was drawn: nothing to chart");
+  std::string cells;
+  if (!sweep.points.empty()) {
+    const auto& c = sweep.points.front().cell;
+    cells = fmt::format("{}, {}, {}", c.at("language"), c.at("backend"), c.at("shape"));
+  }
+  const ChartSpec spec{.title = fmt::format("{}: speed against error ({}, {}x{})", sweep.case_name, cells, sweep.size,
+                                            sweep.size),
+                       .x_label = fmt::format("draw time, wall median of {} runs (ms)", sweep.timing.runs),
+                       .y_label = "interior RMSE against the double-precision reference"};
+  return write_speed_error_chart(points, spec, out_stem);
+}
+
+}  // namespace shaderbed
