@@ -21,6 +21,7 @@
 #include "reference/ModelRegistry.h"
 #include "reference/Reference.h"
 #include "scene/CaseFile.h"
+#include "scene/CaseSelection.h"
 #include "scene/CaseProgram.h"
 #include "scene/NameFilter.h"
 
@@ -98,23 +99,11 @@ ScenarioReference mesh_reference(const ReferenceImage& ref) {
 }
 
 Result<std::vector<Case>> select_cases(const HardOptions& o) {
-  auto files = list_case_files(o.cases_dir.empty() ? default_cases_dir() : o.cases_dir);
-  if (!files) return std::unexpected(files.error());
-  std::vector<std::string> names;
-  for (const std::string& f : *files) names.push_back(fs::path(f).stem().string());
-  if (auto ok = check_names(o.cases, names, "case"); !ok) return std::unexpected(ok.error());
   if (auto ok = check_names(o.backends, {"vulkan", "gl"}, "backend"); !ok) return std::unexpected(ok.error());
   if (auto ok = check_names(o.languages, {"glsl", "hlsl", "cg"}, "language"); !ok) return std::unexpected(ok.error());
   if (auto ok = check_names(o.scenarios, scenario_names(), "scenario"); !ok) return std::unexpected(ok.error());
   if (o.size < 8 || o.size > 1024) return fail("options", fmt::format("--size {} is outside 8..1024", o.size));
-  std::vector<Case> cases;
-  for (const std::string& f : *files) {
-    if (!wanted(o.cases, fs::path(f).stem().string())) continue;
-    auto c = load_case(f);
-    if (!c) return std::unexpected(c.error());
-    cases.push_back(std::move(*c));
-  }
-  return cases;
+  return load_selected_cases(o.cases_dir.empty() ? default_cases_dir() : o.cases_dir, o.cases);
 }
 
 Image to_image(const ScenarioReference& r) {

@@ -2,28 +2,17 @@
 
 #include <algorithm>
 #include <chrono>
-#include <filesystem>
 #include <set>
 
 #include <fmt/format.h>
 
 #include "cli/run/Runner.h"
 #include "plot/ParetoFront.h"
-#include "scene/CaseFile.h"
+#include "scene/CaseSelection.h"
 #include "scene/NameFilter.h"
 
 namespace shaderbed {
-namespace fs = std::filesystem;
 namespace {
-
-Result<Case> find_case(const std::string& dir, const std::string& name) {
-  auto files = list_case_files(dir);
-  if (!files) return std::unexpected(files.error());
-  std::vector<std::string> names;
-  for (const std::string& f : *files) names.push_back(fs::path(f).stem().string());
-  if (auto ok = check_names({name}, names, "case"); !ok) return std::unexpected(ok.error());
-  return load_case((fs::path(dir) / (name + ".toml")).string());
-}
 
 bool is_lut_axis(const std::string& name) { return name == "lut_size" || name == "lut_rows"; }
 
@@ -114,8 +103,9 @@ void mark_pareto_front(std::vector<SweepPoint>& points) {
 
 Result<SweepResult> run_sweep(const SweepOptions& o) {
   const std::string dir = o.cases_dir.empty() ? default_cases_dir() : o.cases_dir;
-  auto c = find_case(dir, o.case_name);
-  if (!c) return std::unexpected(c.error());
+  auto cases = load_selected_cases(dir, {o.case_name});
+  if (!cases) return std::unexpected(cases.error());
+  const Case* c = &cases->front();
   if (auto ok = check_axes(*c, o.axes); !ok) return std::unexpected(ok.error());
   std::vector<std::string> variant_names;
   for (const Variant& v : c->variants) variant_names.push_back(v.name);

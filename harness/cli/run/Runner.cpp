@@ -32,6 +32,7 @@
 #include "lut/LutTolerance.h"
 #include "scene/CaseFile.h"
 #include "scene/CaseProgram.h"
+#include "scene/CaseSelection.h"
 #include "scene/NameFilter.h"
 #include "scene/Primitives.h"
 #include "scene/ProjectedArea.h"
@@ -45,21 +46,11 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
-// Reads the selected case files (only those: one broken case does not block the others),
-// applies --param overrides and checks every name filter.
+// Reads the selected case files, applies --param overrides and checks every name filter.
 Result<std::vector<Case>> select_cases(const RunOptions& o) {
-  auto files = list_case_files(o.cases_dir.empty() ? default_cases_dir() : o.cases_dir);
-  if (!files) return std::unexpected(files.error());
-  std::vector<std::string> case_names;
-  for (const std::string& f : *files) case_names.push_back(fs::path(f).stem().string());
-  if (auto ok = check_names(o.cases, case_names, "case"); !ok) return std::unexpected(ok.error());
-  std::vector<Case> cases;
-  for (const std::string& f : *files) {
-    if (!wanted(o.cases, fs::path(f).stem().string())) continue;
-    auto c = load_case(f);
-    if (!c) return std::unexpected(c.error());
-    cases.push_back(std::move(*c));
-  }
+  auto selected = load_selected_cases(o.cases_dir.empty() ? default_cases_dir() : o.cases_dir, o.cases);
+  if (!selected) return std::unexpected(selected.error());
+  std::vector<Case> cases = std::move(*selected);
   if (auto ok = apply_parameter_overrides(o.params, o.cases, cases); !ok) return std::unexpected(ok.error());
   std::vector<std::string> variant_names;
   for (const Case& c : cases)
