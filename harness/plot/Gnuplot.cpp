@@ -1,20 +1,13 @@
 #include "plot/Gnuplot.h"
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
-#include <cerrno>
 #include <cstdlib>
-#include <cstring>
-#include <fstream>
 #include <sstream>
-#include <vector>
 
 #include <fmt/format.h>
 
-extern char** environ;
+#include "core/ChildProcess.h"
 
 namespace shaderbed {
 namespace {
@@ -26,13 +19,6 @@ constexpr const char* kInstallHint = "install gnuplot-nox (scripts/install-deps)
 bool is_executable_file(const fs::path& p) {
   std::error_code ec;
   return fs::is_regular_file(p, ec) && ::access(p.c_str(), X_OK) == 0;
-}
-
-std::string read_all(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 // The line worth showing: gnuplot prints warnings (e.g. a missing data file) before the
@@ -69,32 +55,15 @@ Result<fs::path> find_gnuplot(const std::string& gnuplot) {
 Result<void> run_gnuplot(const std::string& gnuplot, const fs::path& script) {
   auto program = find_gnuplot(gnuplot);
   if (!program) return std::unexpected(program.error());
-
-  const fs::path out = script.parent_path() / "gnuplot.stdout", err = script.parent_path() / "gnuplot.stderr";
-  std::string program_text = program->string(), script_text = script.string();
-  std::vector<char*> argv = {program_text.data(), script_text.data(), nullptr};
-
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  pid_t pid = 0;
-  const int spawned = ::posix_spawn(&pid, program_text.c_str(), &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (spawned != 0)
-    return fail("plot", fmt::format("cannot run {}: {} ({})", program_text, std::strerror(spawned), kInstallHint));
-
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0) {
-    if (errno != EINTR) return fail("plot", fmt::format("lost track of {}: {}", program_text, std::strerror(errno)));
+  auto exit = run_child({program->string(), script.string()}, script.parent_path(), "plot");
+  if (!exit) {
+    Error e = std::move(exit.error());
+    e.message += fmt::format(" ({})", kInstallHint);
+    return std::unexpected(std::move(e));
   }
-  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return {};
-
-  const std::string how = WIFEXITED(status) ? fmt::format("exit {}", WEXITSTATUS(status))
-                                            : fmt::format("signal {}", WTERMSIG(status));
-  const std::string line = first_error_line(read_all(err));
-  return fail("plot", fmt::format("gnuplot failed ({}): {}", how, line.empty() ? "no message on stderr" : line));
+  if (exit->succeeded()) return {};
+  const std::string line = first_error_line(exit->stderr_text);
+  return fail("plot", fmt::format("gnuplot failed ({}): {}", exit->how(), line.empty() ? "no message on stderr" : line));
 }
 
 std::string gnuplot_string(std::string_view text) {

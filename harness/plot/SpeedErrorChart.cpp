@@ -12,7 +12,7 @@
 
 #include "plot/Gnuplot.h"
 #include "plot/ParetoFront.h"
-#include "plot/ScratchDirectory.h"
+#include "core/ScratchDirectory.h"
 
 namespace shaderbed {
 namespace {
@@ -219,7 +219,7 @@ Result<ChartFiles> write_speed_error_chart(const std::vector<ChartPoint>& points
     in.notes.push_back(fmt::format("{} point{} with NaN/Inf cost or error drawn at the edge (x), not on the front", n,
                                    n == 1 ? "" : "s"));
 
-  auto dir = ScratchDirectory::create();
+  auto dir = ScratchDirectory::create("plot");
   if (!dir) return std::unexpected(dir.error());
   const fs::path data_path = dir->path() / "points.dat", script_path = dir->path() / "chart.gp";
   const std::string name = svg_name(out_stem);

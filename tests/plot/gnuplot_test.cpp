@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "plot/Gnuplot.h"
-#include "plot/ScratchDirectory.h"
+#include "core/ScratchDirectory.h"
 
 namespace shaderbed {
 namespace {
@@ -21,7 +21,7 @@ TEST(Gnuplot, StringLiteralsDoubleSingleQuotesAndFlattenLineBreaks) {
 }
 
 TEST(Gnuplot, QuotedTextReachesTheOutputVerbatim) {
-  auto dir = ScratchDirectory::create();
+  auto dir = ScratchDirectory::create("plot");
   ASSERT_TRUE(dir) << dir.error().to_string();
   const std::string tricky = R"(it's "q" a_b^c {x} \n @GPVAL_TERM $0 #no comment)";
   const fs::path script = dir->path() / "t.gp", table = dir->path() / "out.txt";
@@ -35,7 +35,7 @@ TEST(Gnuplot, QuotedTextReachesTheOutputVerbatim) {
 }
 
 TEST(Gnuplot, AFailingScriptReportsGnuplotsErrorLine) {
-  auto dir = ScratchDirectory::create();
+  auto dir = ScratchDirectory::create("plot");
   ASSERT_TRUE(dir) << dir.error().to_string();
   const fs::path script = dir->path() / "bad.gp";
   std::ofstream(script) << "set terminal dumb\nset output '/dev/null'\nplot no_such_variable_here\n";
@@ -49,7 +49,7 @@ TEST(Gnuplot, AFailingScriptReportsGnuplotsErrorLine) {
 TEST(Gnuplot, ScratchDirectoryIsRemovedWithItsContents) {
   fs::path kept;
   {
-    auto dir = ScratchDirectory::create();
+    auto dir = ScratchDirectory::create("plot");
     ASSERT_TRUE(dir) << dir.error().to_string();
     kept = dir->path();
     std::ofstream(kept / "file") << "x";

@@ -1,17 +1,11 @@
 #include "stats/nir/NirDump.h"
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <cerrno>
 #include <cstdlib>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <vector>
+
+#include "core/ChildProcess.h"
+#include "core/ScratchDirectory.h"
 
 extern char** environ;
 
@@ -20,26 +14,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_all(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 std::string tail(const std::string& s, size_t n) { return s.size() <= n ? s : "..." + s.substr(s.size() - n); }
-
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    std::string templ = (fs::temp_directory_path() / "shaderbed-nir-XXXXXX").string();
-    if (::mkdtemp(templ.data()) != nullptr) path = templ;
-  }
-  ~TempDir() {
-    std::error_code ec;
-    if (!path.empty()) fs::remove_all(path, ec);
-  }
-};
 
 // Environment of the child: ours minus any Mesa capture settings, plus the method's.
 std::vector<std::string> child_environment(NirMethod method, const fs::path& trace) {
@@ -104,49 +79,29 @@ Result<NirProgramCounts> nir_counts(const CompiledProgram& program, const NirReq
     if (m->source_file.empty() || !fs::exists(m->source_file))
       return unavailable("the helper recompiles from source files, and '" + m->source_file + "' is not a readable file");
 
-  TempDir dir;
-  if (dir.path.empty()) return unavailable("cannot create a temporary directory");
-  const fs::path trace = dir.path / "trace.xml", out = dir.path / "stdout.txt", err = dir.path / "stderr.txt";
+  auto dir = ScratchDirectory::create("nir");
+  if (!dir) return unavailable(dir.error().message);
+  const fs::path trace = dir->path() / "trace.xml";
 
   const std::string helper = request.helper.empty() ? nir_dump_helper() : request.helper;
-  std::vector<std::string> args = {helper,
-                                   "--backend", to_string(request.backend),
-                                   "--path", to_string(request.path),
-                                   "--lang", language_name(program.language),
-                                   "--vertex", program.vertex.source_file,
-                                   "--fragment", program.fragment.source_file,
-                                   "--vertex-entry", program.vertex.entry_point,
-                                   "--fragment-entry", program.fragment.entry_point};
-  std::vector<std::string> env = child_environment(request.method, trace);
-  std::vector<char*> argv, envp;
-  for (auto& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  for (auto& e : env) envp.push_back(e.data());
-  envp.push_back(nullptr);
-
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  pid_t pid = 0;
-  const int spawned = ::posix_spawn(&pid, helper.c_str(), &actions, nullptr, argv.data(), envp.data());
-  posix_spawn_file_actions_destroy(&actions);
-  if (spawned != 0) return unavailable("cannot run the helper '" + helper + "': " + std::strerror(spawned));
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-  const std::string stderr_text = read_all(err);
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    return fail("nir", "the NIR helper failed (" +
-                           (WIFEXITED(status) ? "exit " + std::to_string(WEXITSTATUS(status))
-                                              : "signal " + std::to_string(WTERMSIG(status))) +
-                           "): " + tail(read_all(out) + stderr_text, 600));
+  const std::vector<std::string> args = {helper,
+                                         "--backend", to_string(request.backend),
+                                         "--path", to_string(request.path),
+                                         "--lang", language_name(program.language),
+                                         "--vertex", program.vertex.source_file,
+                                         "--fragment", program.fragment.source_file,
+                                         "--vertex-entry", program.vertex.entry_point,
+                                         "--fragment-entry", program.fragment.entry_point};
+  auto exit = run_child(args, dir->path(), "nir", child_environment(request.method, trace));
+  if (!exit) return unavailable("cannot run the helper '" + helper + "': " + exit.error().message);
+  const std::string& stderr_text = exit->stderr_text;
+  if (!exit->succeeded())
+    return fail("nir", "the NIR helper failed (" + exit->how() + "): " + tail(exit->stdout_text + stderr_text, 600));
 
   std::vector<NirShader> shaders;
   if (request.method == NirMethod::gallium_trace) {
     if (!fs::exists(trace)) return unavailable("the driver wrote no trace file (GALLIUM_TRACE not honoured)");
-    shaders = nir_from_gallium_trace(read_all(trace));
+    shaders = nir_from_gallium_trace(read_text_file(trace));
     if (shaders.empty())
       return unavailable("the trace holds no NIR shaders (GALLIUM_TRACE_NIR not honoured, or the driver was not given NIR)");
   } else {

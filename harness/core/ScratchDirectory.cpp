@@ -1,4 +1,4 @@
-#include "plot/ScratchDirectory.h"
+#include "core/ScratchDirectory.h"
 
 #include <cerrno>
 #include <cstdlib>
@@ -7,13 +7,13 @@
 
 namespace shaderbed {
 
-Result<ScratchDirectory> ScratchDirectory::create() {
+Result<ScratchDirectory> ScratchDirectory::create(const std::string& purpose) {
   std::error_code ec;
   std::filesystem::path base = std::filesystem::temp_directory_path(ec);
   if (ec) base = "/tmp";
-  std::string pattern = (base / "shaderbed-plot-XXXXXX").string();
+  std::string pattern = (base / ("shaderbed-" + purpose + "-XXXXXX")).string();
   if (::mkdtemp(pattern.data()) == nullptr)
-    return fail("plot", "cannot create a temporary directory under " + base.string() + ": " + std::strerror(errno));
+    return fail(purpose, "cannot create a temporary directory under " + base.string() + ": " + std::strerror(errno));
   return ScratchDirectory(std::filesystem::path(pattern));
 }
 

@@ -1,7 +1,8 @@
 #pragma once
-// A private temporary directory for one gnuplot run (script, data, raw outputs),
+// A private temporary directory (a child process's script, data and captured output),
 // removed with everything in it when it goes out of scope.
 #include <filesystem>
+#include <string>
 
 #include "core/Error.h"
 
@@ -9,7 +10,8 @@ namespace shaderbed {
 
 class ScratchDirectory {
  public:
-  static Result<ScratchDirectory> create();
+  // $TMPDIR/shaderbed-<purpose>-XXXXXX; errors have stage `purpose`.
+  static Result<ScratchDirectory> create(const std::string& purpose);
   ScratchDirectory(ScratchDirectory&& other) noexcept : path_(std::move(other.path_)) { other.path_.clear(); }
   ScratchDirectory& operator=(ScratchDirectory&&) = delete;
   ScratchDirectory(const ScratchDirectory&) = delete;
