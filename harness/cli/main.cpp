@@ -10,7 +10,8 @@ int main(int argc, char** argv) {
   const shaderbed::Command commands[] = {shaderbed::add_run_command(app), shaderbed::add_eval_command(app),
                                           shaderbed::add_merge_command(app),
                                           shaderbed::add_stats_command(app), shaderbed::add_sweep_command(app),
-                                          shaderbed::add_hard_command(app)};
+                                          shaderbed::add_hard_command(app),
+                                          shaderbed::add_bench_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -291,6 +291,7 @@ RunReport read_report(const json& j) {
   read(j, "shard", "", report.shard);
   read(j, "out_dir", "", report.out_dir);
   read(j, "wall_ms", "", report.wall_ms);
+  read(j, "workers", "", report.workers);
   const json* results = member(j, "results");
   if (!results) throw BadField{"/results", "missing"};
   if (!results->is_array()) throw BadField{"/results", "expected an array, found " + std::string(results->type_name())};
@@ -312,6 +313,7 @@ std::string to_json(const RunReport& report) {
   j["shard"] = report.shard;
   j["out_dir"] = report.out_dir;
   j["wall_ms"] = number(report.wall_ms);
+  j["workers"] = report.workers;
   size_t known = 0;
   for (const CellResult& r : report.results) known += r.status == "fail" && r.known_failure;
   j["totals"] = {{"cells", report.results.size()},

@@ -106,6 +106,7 @@ struct RunReport {
   ToolVersions tools;
   std::vector<CellResult> results;
   double wall_ms = 0;
+  int workers = 1;                  // worker threads that ran the cells (run --jobs)
   std::string out_dir;
   std::string shard;                // "I/N" when this is one shard of a run, else ""
 

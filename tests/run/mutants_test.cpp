@@ -247,8 +247,8 @@ TEST_P(MutantCase, IsCaughtAndAttributed) {
       EXPECT_GT(r.metrics.interior_pixels, 0u);
       EXPECT_GE(r.metrics.coverage_mismatch, r.metrics.interior_pixels)
           << m.name << " " << cell << " should draw none of the reference's interior: " << r.message;
-      if (r.metrics.reference_covered_pixels > 0)   // once the runner reports coverage counts
-        EXPECT_EQ(r.metrics.covered_pixels, 0u) << m.name << " " << cell << " should draw nothing: " << r.message;
+      EXPECT_GT(r.metrics.reference_covered_pixels, 0u);
+      EXPECT_EQ(r.metrics.covered_pixels, 0u) << m.name << " " << cell << " should draw nothing: " << r.message;
     }
     verdicts[r.attribution].push_back(cell);
   }

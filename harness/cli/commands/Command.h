@@ -22,5 +22,6 @@ Command add_merge_command(CLI::App& app);
 Command add_stats_command(CLI::App& app);
 Command add_sweep_command(CLI::App& app);
 Command add_hard_command(CLI::App& app);
+Command add_bench_command(CLI::App& app);
 
 }  // namespace shaderbed

@@ -317,10 +317,11 @@ std::vector<std::vector<const CellGroup*>> bundles_of(const std::vector<CellGrou
 // report's driver versions are the ones that ran); every other worker starts its own,
 // as a Vulkan device and a GL context serve one thread at a time.
 std::vector<CellResult> run_groups(const RunOptions& o, const SceneSetup& scene, const std::vector<CellGroup>& groups,
-                                   std::vector<BackendSlot>& first_backends, size_t total) {
+                                   std::vector<BackendSlot>& first_backends, size_t total, int& workers_used) {
   const auto bundles = bundles_of(groups);
   const int hardware = int(std::max(1u, std::thread::hardware_concurrency()));
   const size_t workers = std::min(bundles.size(), size_t(o.jobs > 0 ? o.jobs : hardware));
+  workers_used = int(workers);
   std::mutex mutex;   // guards next, results, o.on_cell
   size_t next = 0;
   std::vector<CellResult> results;
@@ -408,7 +409,7 @@ Result<RunReport> run_suite(const RunOptions& o) {
 
   SceneSetup scene;
   scene.width = scene.height = o.size;
-  std::vector<CellResult> results = run_groups(o, scene, groups, backends, total);
+  std::vector<CellResult> results = run_groups(o, scene, groups, backends, total, report.workers);
   report.results = std::move(results);
   apply_expectations(known, report);
   sort_results(report);

@@ -1,0 +1,49 @@
+#pragma once
+// `shaderbed bench`: the speed of shaderbed itself, in one run. The whole suite once
+// (draws untimed: no warm-up or timed repeats, so its wall time is the suite's own work),
+// where that time went (drivers vs shaderbed), then a few cells drawn by the drivers
+// against the CPU reference rendering the same scene.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "backends/Backend.h"
+#include "bench/ReferenceVsDrivers.h"
+#include "bench/SuiteCost.h"
+#include "core/Error.h"
+#include "report/Results.h"
+
+namespace shaderbed::bench {
+
+struct BenchOptions {
+  std::string cases_dir;                 // "" = the library's
+  std::vector<std::string> cases;        // the suite's cases; empty = all (the default suite)
+  int size = 256;
+  int jobs = 0;                          // suite workers; 0 = one per core, as `run`
+  std::vector<ComparedCell> compared;    // cells for the reference-vs-drivers timing
+  int runs = 9;                          // timed repeats of those
+  // Progress: a step starting, and the suite's cells as they finish.
+  std::function<void(const std::string& step)> on_step;
+  std::function<void(size_t done, size_t total)> on_cell;
+};
+
+// The cells compared by default: a cheap and an expensive model, on two shapes.
+std::vector<ComparedCell> default_compared_cells();
+
+struct BenchReport {
+  ToolVersions tools;
+  int size = 0;
+  int jobs = 0;                          // as asked
+  std::vector<std::string> cases;        // as asked; empty = all
+  TimingRequest suite_timing;            // what the suite's draws were: once each, untimed
+  SuiteCost suite;
+  // The process's CPU time (user + sys, every thread: workers and the drivers' own
+  // rasteriser threads) over the suite: what the parts' thread wall times cost in CPU.
+  double suite_cpu_ms = 0;
+  size_t suite_failures = 0;             // cells that drew but failed the comparison
+  std::vector<ReferenceVsDrivers> comparisons;
+};
+
+Result<BenchReport> run_bench(const BenchOptions& options);
+
+}  // namespace shaderbed::bench

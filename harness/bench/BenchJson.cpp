@@ -1,0 +1,70 @@
+#include "bench/BenchJson.h"
+
+#include <nlohmann/json.hpp>
+
+namespace shaderbed::bench {
+namespace {
+
+nlohmann::json interval(const TimingInterval& t) {
+  return {{"median", t.median}, {"low", t.low}, {"high", t.high}, {"level", t.level}};
+}
+
+nlohmann::json suite(const SuiteCost& s) {
+  nlohmann::json parts = nlohmann::json::object();
+  for (const CostPart& p : s.parts)
+    parts[p.name] = {{"owner", p.owner == CostOwner::driver ? "driver" : "shaderbed"},
+                     {"description", p.description},
+                     {"ms", p.ms},
+                     {"count", p.count}};
+  return {{"cells", s.cells},
+          {"errors", s.errors},
+          {"wall_ms", s.wall_ms},
+          {"workers", s.workers},
+          {"worker_ms", s.worker_ms},
+          {"parts", parts},
+          {"driver_ms", s.driver_ms},
+          {"shaderbed_ms", s.shaderbed_ms},
+          {"summed_ms", s.summed_ms},
+          {"unaccounted_ms", s.unaccounted_ms},
+          {"shares", {{"driver", s.driver_share()}, {"shaderbed", s.shaderbed_share()}}}};
+}
+
+nlohmann::json comparison(const ReferenceVsDrivers& c) {
+  nlohmann::json draws = nlohmann::json::array();
+  for (const DriverDraw& d : c.draws)
+    draws.push_back({{"backend", d.backend},
+                     {"path", d.path},
+                     {"language", d.language},
+                     {"driver", d.driver},
+                     {"wall_ms", interval(d.wall)},
+                     {"reference_ratio", d.reference_ratio}});
+  return {{"case", c.cell.case_name}, {"variant", c.cell.variant}, {"shape", c.cell.shape}, {"size", c.size},
+          {"runs", c.runs},           {"reference_ms", interval(c.reference)},  {"draws", draws}};
+}
+
+}  // namespace
+
+std::string bench_json(const BenchReport& r) {
+  nlohmann::json comparisons = nlohmann::json::array();
+  for (const ReferenceVsDrivers& c : r.comparisons) comparisons.push_back(comparison(c));
+  const nlohmann::json j = {
+      {"schema", kBenchSchemaVersion},
+      {"tools",
+       {{"glslang", r.tools.glslang},
+        {"spirv_tools", r.tools.spirv_tools},
+        {"spirv_cross", r.tools.spirv_cross},
+        {"vulkan_driver", r.tools.vulkan_driver},
+        {"gl_driver", r.tools.gl_driver},
+        {"llvm", r.tools.llvm}}},
+      {"size", r.size},
+      {"jobs", r.jobs},
+      {"cases", r.cases},
+      {"suite", suite(r.suite)},
+      {"suite_cpu_ms", r.suite_cpu_ms},
+      {"suite_timing", {{"warmup", r.suite_timing.warmup}, {"runs", r.suite_timing.runs}}},
+      {"suite_failures", r.suite_failures},
+      {"reference_vs_drivers", comparisons}};
+  return j.dump(2) + "\n";
+}
+
+}  // namespace shaderbed::bench
