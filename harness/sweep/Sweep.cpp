@@ -16,6 +16,9 @@ namespace {
 
 bool is_lut_axis(const std::string& name) { return name == "lut_size" || name == "lut_rows"; }
 
+// Axes that choose how a scene is drawn rather than what the scene is.
+bool is_implementation_axis(const std::string& name) { return is_lut_axis(name) || name == kTessellationAxis; }
+
 // Whether drawing `variant` at another value of `axis` draws something different.
 bool reads(const Variant& variant, const SweepAxis& axis) { return !is_lut_axis(axis.name) || !variant.lut.empty(); }
 
@@ -88,15 +91,19 @@ SweepPoint point_of(const CellResult& r, const std::map<std::string, double>& ax
   return p;
 }
 
-void mark_pareto_front(std::vector<SweepPoint>& points) {
-  std::vector<CostError> measured;
-  std::vector<size_t> index;   // measured[i] is points[index[i]]
-  for (size_t i = 0; i < points.size(); ++i)
-    if (points[i].status != "error") {
-      measured.push_back({points[i].time_ms, points[i].rmse});
-      index.push_back(i);
-    }
-  for (size_t i : find_pareto_front(measured).front) points[index[i]].pareto = true;
+void mark_pareto_fronts(std::vector<SweepPoint>& points) {
+  std::set<std::string> scenes;
+  for (const SweepPoint& p : points) scenes.insert(p.scene);
+  for (const std::string& scene : scenes) {
+    std::vector<CostError> measured;
+    std::vector<size_t> index;   // measured[i] is points[index[i]]
+    for (size_t i = 0; i < points.size(); ++i)
+      if (points[i].scene == scene && points[i].status != "error") {
+        measured.push_back({points[i].time_ms, points[i].rmse});
+        index.push_back(i);
+      }
+    for (size_t i : find_pareto_front(measured).front) points[index[i]].pareto = true;
+  }
 }
 
 }  // namespace
@@ -165,9 +172,14 @@ Result<SweepResult> run_sweep(const SweepOptions& o) {
       const Variant& v = *std::find_if(c->variants.begin(), c->variants.end(),
                                        [&](const Variant& x) { return x.name == r.variant; });
       std::map<std::string, double> values;
-      for (size_t a = 0; a < o.axes.size(); ++a)
+      std::vector<std::string> scene;
+      for (size_t a = 0; a < o.axes.size(); ++a) {
         if (reads(v, o.axes[a])) values[o.axes[a].name] = step.values[a];
+        if (!is_implementation_axis(o.axes[a].name))
+          scene.push_back(o.axes[a].name + "=" + format_axis_value(step.values[a]));
+      }
       result.points.push_back(point_of(r, values, step.precision, precisions.size() > 1));
+      result.points.back().scene = fmt::format("{}", fmt::join(scene, " "));
       // Cells of different points share ids; the HTML report tells them apart by variant name.
       r.variant += label.empty() ? "" : fmt::format(" [{}]", fmt::join(label, " "));
       result.cells.results.push_back(std::move(r));
@@ -183,7 +195,7 @@ Result<SweepResult> run_sweep(const SweepOptions& o) {
     for (SweepPoint& p : result.points)
       p.series += " " + p.cell.at("language") + " " + p.cell.at("backend") + "/" + p.cell.at("path") + " " +
                   p.cell.at("shape");
-  mark_pareto_front(result.points);
+  mark_pareto_fronts(result.points);
   return result;
 }
 

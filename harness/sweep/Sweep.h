@@ -7,6 +7,9 @@
 // Each point is one cell (variant x language x backend x path x shape) at one combination
 // of axis values. A variant that does not read an axis (a LUT size for an arithmetic
 // variant) is drawn once, at the first combination, as a fixed point of comparison.
+// The Pareto front of time against RMSE is taken per scene (SweepPoint::scene): a LUT size
+// or a mesh density is a choice between ways of drawing one scene, a roughness is another
+// scene.
 // Points are drawn one at a time (no parallel workers) so their timings are comparable.
 // Every point's error is against the per-pixel model in double precision: a per-vertex
 // variant's error is what shading at vertices loses, a LUT variant's what the table loses.
@@ -38,6 +41,10 @@ struct SweepOptions {
 
 struct SweepPoint {
   std::map<std::string, double> axis_values;   // the axes this point's variant reads
+  // The point's scene: its values of the axes that change what is drawn (case parameters),
+  // as opposed to how it is drawn (variant, precision, LUT size, tessellation). Points
+  // compete for the Pareto front, and share a chart, only within one scene.
+  std::string scene;                           // "" = the case's own parameters
   std::map<std::string, std::string> cell;     // variant, precision, language, backend, path, shape
   std::string series;                          // chart series: variant (+ precision, language, backend)
   std::string label;                           // chart label: the axis values, or the variant
@@ -47,7 +54,7 @@ struct SweepPoint {
   double build_ms = 0;                         // pipeline build + JIT, 0 when cached
   int instructions = 0, vertex_instructions = 0, fragment_instructions = 0;   // SPIR-V, as drawn
   std::string status, message;
-  bool pareto = false;                         // on the speed/error Pareto front
+  bool pareto = false;                         // on its scene's speed/error Pareto front
 };
 
 struct SweepResult {

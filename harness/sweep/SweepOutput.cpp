@@ -62,7 +62,7 @@ void print_sweep_table(const SweepResult& sweep, std::FILE* out) {
              sweep.points.size(), sweep.case_name, sweep.size, sweep.size, sweep.timing.runs, sweep.timing.warmup);
 }
 
-std::string sweep_json(const SweepResult& sweep, const ChartFiles* chart) {
+std::string sweep_json(const SweepResult& sweep, const std::vector<SceneChart>& charts) {
   ojson j;
   j["case"] = sweep.case_name;
   j["size"] = sweep.size;
@@ -92,38 +92,49 @@ std::string sweep_json(const SweepResult& sweep, const ChartFiles* chart) {
                       {"message", p.message},
                       {"series", p.series},
                       {"label", p.label},
+                      {"scene", p.scene},
                       {"pareto", p.pareto}});
   }
   j["points"] = std::move(points);
-  if (chart) j["chart"] = {{"png", chart->png}, {"svg", chart->svg}};
+  ojson chart_list = ojson::array();
+  for (const SceneChart& c : charts) chart_list.push_back({{"scene", c.scene}, {"png", c.files.png}, {"svg", c.files.svg}});
+  j["charts"] = std::move(chart_list);
   return j.dump(2) + "\n";
 }
 
-Result<void> write_sweep_json(const SweepResult& sweep, const ChartFiles* chart, const std::string& path) {
+Result<void> write_sweep_json(const SweepResult& sweep, const std::vector<SceneChart>& charts, const std::string& path) {
   std::error_code ec;
   if (const auto parent = std::filesystem::path(path).parent_path(); !parent.empty())
     std::filesystem::create_directories(parent, ec);
   std::ofstream f(path);
-  if (f) f << sweep_json(sweep, chart);
+  if (f) f << sweep_json(sweep, charts);
   if (!f) return fail("sweep", "cannot write " + path);
   return {};
 }
 
-Result<ChartFiles> write_sweep_chart(const SweepResult& sweep, const std::string& out_stem) {
-  std::vector<ChartPoint> points;
+Result<std::vector<SceneChart>> write_sweep_charts(const SweepResult& sweep, const std::string& out_stem) {
+  std::vector<std::string> scenes;
   for (const SweepPoint& p : sweep.points)
-    if (p.status != "error") points.push_back({p.label, p.series, p.time_ms, p.rmse});
-  if (points.empty()) return fail("sweep", "no point was drawn: nothing to chart");
-  std::string cells;
-  if (!sweep.points.empty()) {
-    const auto& c = sweep.points.front().cell;
-    cells = fmt::format("{}, {}, {}", c.at("language"), c.at("backend"), c.at("shape"));
+    if (p.status != "error" && std::find(scenes.begin(), scenes.end(), p.scene) == scenes.end()) scenes.push_back(p.scene);
+  if (scenes.empty()) return fail("sweep", "no point was drawn: nothing to chart");
+  const auto& c = sweep.points.front().cell;
+  const std::string cells = fmt::format("{}, {}, {}", c.at("language"), c.at("backend"), c.at("shape"));
+  std::vector<SceneChart> charts;
+  for (size_t i = 0; i < scenes.size(); ++i) {
+    std::vector<ChartPoint> points;
+    for (const SweepPoint& p : sweep.points)
+      if (p.status != "error" && p.scene == scenes[i]) points.push_back({p.label, p.series, p.time_ms, p.rmse});
+    const std::string scene = scenes[i].empty() ? "" : ", " + scenes[i];
+    const ChartSpec spec{.title = fmt::format("{}{}: speed against error ({}, {}x{})", sweep.case_name, scene, cells,
+                                              sweep.size, sweep.size),
+                         .x_label = fmt::format("draw time, wall median of {} runs (ms)", sweep.timing.runs),
+                         .y_label = "interior RMSE against the per-pixel model in double"};
+    const std::string stem = scenes.size() == 1 ? out_stem : fmt::format("{}-{}", out_stem, i + 1);
+    auto files = write_speed_error_chart(points, spec, stem);
+    if (!files) return std::unexpected(files.error());
+    charts.push_back({scenes[i], std::move(*files)});
   }
-  const ChartSpec spec{.title = fmt::format("{}: speed against error ({}, {}x{})", sweep.case_name, cells, sweep.size,
-                                            sweep.size),
-                       .x_label = fmt::format("draw time, wall median of {} runs (ms)", sweep.timing.runs),
-                       .y_label = "interior RMSE against the double-precision reference"};
-  return write_speed_error_chart(points, spec, out_stem);
+  return charts;
 }
 
 }  // namespace shaderbed

@@ -9,8 +9,8 @@
 //                    "time_ms", "time_ci_ms": [low, high],   (draw wall median, docs/timing.md)
 //                    "driver_clock_ms", "build_ms",
 //                    "instructions", "instructions_by_stage": {"vertex", "fragment"},
-//                    "status", "message", "series", "label", "pareto"}],
-//        "chart": {"png", "svg"}}                            (when a chart was written)
+//                    "status", "message", "series", "label", "scene", "pareto"}],
+//        "charts": [{"scene", "png", "svg"}]}                (one per scene, when written)
 #include <cstdio>
 #include <string>
 
@@ -21,11 +21,17 @@
 namespace shaderbed {
 
 void print_sweep_table(const SweepResult& sweep, std::FILE* out);
-std::string sweep_json(const SweepResult& sweep, const ChartFiles* chart);
-Result<void> write_sweep_json(const SweepResult& sweep, const ChartFiles* chart, const std::string& path);
+struct SceneChart {
+  std::string scene;   // SweepPoint::scene
+  ChartFiles files;
+};
 
-// Time (draw wall median) across, interior RMSE up, one series per variant, the Pareto
-// front marked; out_stem.png and out_stem.svg.
-Result<ChartFiles> write_sweep_chart(const SweepResult& sweep, const std::string& out_stem);
+std::string sweep_json(const SweepResult& sweep, const std::vector<SceneChart>& charts);
+Result<void> write_sweep_json(const SweepResult& sweep, const std::vector<SceneChart>& charts, const std::string& path);
+
+// Per scene: time (draw wall median) across, interior RMSE up, one series per variant,
+// the Pareto front drawn. One scene: out_stem.png and .svg; several: out_stem-<i>.png ...
+// in the order the scenes were first drawn.
+Result<std::vector<SceneChart>> write_sweep_charts(const SweepResult& sweep, const std::string& out_stem);
 
 }  // namespace shaderbed

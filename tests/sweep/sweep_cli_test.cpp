@@ -71,7 +71,8 @@ TEST(SweepCli, LutSizeSweepWritesPointsWithFallingErrorAndAChart) {
   EXPECT_GE(on_front, 1u);
   EXPECT_GT(fs::file_size(dir / "chart.png"), 1000u);
   EXPECT_GT(fs::file_size(dir / "chart.svg"), 1000u);
-  EXPECT_EQ(j.at("chart").at("png"), (dir / "chart.png").string());
+  ASSERT_EQ(j.at("charts").size(), 1u);   // LUT sizes are ways of drawing one scene
+  EXPECT_EQ(j.at("charts")[0].at("png"), (dir / "chart.png").string());
 }
 
 TEST(SweepCli, PerVertexErrorFallsAsTheMeshGetsFiner) {
@@ -89,6 +90,21 @@ TEST(SweepCli, PerVertexErrorFallsAsTheMeshGetsFiner) {
     ++points;
   }
   EXPECT_EQ(points, 4u);
+}
+
+TEST(SweepCli, EachSceneHasItsOwnParetoFrontAndChart) {
+  const fs::path dir = fresh("scenes");
+  const CliRun run = shaderbed("sweep ward_iso --variant pixel,pixel_robust --param roughness=0.01:0.5:2 --size 64 "
+                               "--repeat 1 --json " + (dir / "w.json").string() + " --chart " + (dir / "w").string());
+  ASSERT_EQ(run.status, 0) << run.output;
+  const json j = read(dir / "w.json");
+  std::map<std::string, int> fronts;   // scene -> points on its front
+  for (const json& p : j.at("points")) fronts[p.at("scene").get<std::string>()] += p.at("pareto").get<bool>();
+  ASSERT_EQ(fronts.size(), 2u);
+  for (const auto& [scene, on_front] : fronts) EXPECT_GE(on_front, 1) << scene;
+  ASSERT_EQ(j.at("charts").size(), 2u);
+  EXPECT_TRUE(fs::exists(dir / "w-1.svg"));
+  EXPECT_TRUE(fs::exists(dir / "w-2.png"));
 }
 
 TEST(SweepCli, BadInputIsOneLineAndStatusTwo) {

@@ -57,7 +57,9 @@ Command add_sweep_command(CLI::App& app) {
   cmd->add_option("--warmup", o.timing.warmup, "Untimed draws before them")->capture_default_str()->check(CLI::Range(0, 100));
   cmd->add_option("--json", args->json, "Write the points as JSON: {\"points\": [{\"params\", \"rmse\", \"max_abs\", "
                                         "\"time_ms\", \"instructions\", ...}]}");
-  cmd->add_option("--chart", args->chart, "Write the speed-against-error chart as STEM.png and STEM.svg (gnuplot)");
+  cmd->add_option("--chart", args->chart,
+                  "Write the speed-against-error chart as STEM.png and STEM.svg (gnuplot); one per scene "
+                  "(STEM-1, STEM-2, ...) when a case parameter is swept");
   cmd->add_option("--html", args->html, "Write an HTML report of every cell with the chart to this folder");
   cmd->add_option("--cases-dir", o.cases_dir, "Folder of case files")->default_str(default_cases_dir());
 
@@ -90,17 +92,18 @@ Command add_sweep_command(CLI::App& app) {
             std::string chart_stem = args->chart;
             if (chart_stem.empty() && !args->html.empty())
               chart_stem = (std::filesystem::path(args->html) / "speed_error").string();
-            Result<ChartFiles> chart = fail("sweep", "no chart asked for");
+            std::vector<SceneChart> charts;
             if (!chart_stem.empty()) {
-              chart = write_sweep_chart(*sweep, chart_stem);
-              if (!chart) {
-                fmt::print(stderr, "shaderbed: {}\n", chart.error().to_string());
+              auto written = write_sweep_charts(*sweep, chart_stem);
+              if (!written) {
+                fmt::print(stderr, "shaderbed: {}\n", written.error().to_string());
                 return kExitFail;
               }
-              fmt::print("chart: {} {}\n", chart->png, chart->svg);
+              charts = std::move(*written);
+              for (const SceneChart& c : charts) fmt::print("chart: {} {}\n", c.files.png, c.files.svg);
             }
             if (!args->json.empty()) {
-              if (auto ok = write_sweep_json(*sweep, chart ? &*chart : nullptr, args->json); !ok) {
+              if (auto ok = write_sweep_json(*sweep, charts, args->json); !ok) {
                 fmt::print(stderr, "shaderbed: {}\n", ok.error().to_string());
                 return kExitFail;
               }
@@ -108,8 +111,10 @@ Command add_sweep_command(CLI::App& app) {
             }
             if (!args->html.empty()) {
               HtmlOptions html;
-              html.charts.push_back({fmt::format("{}", sweep->case_name), read_file(chart->svg),
-                                     "draw time against interior RMSE per point; the dashed line is the Pareto front"});
+              for (const SceneChart& c : charts)
+                html.charts.push_back({c.scene.empty() ? sweep->case_name : sweep->case_name + ", " + c.scene,
+                                       read_file(c.files.svg),
+                                       "draw time against interior RMSE per point; the dashed line is the Pareto front"});
               auto written = write_html(sweep->cells, args->html, html);
               if (!written) {
                 fmt::print(stderr, "shaderbed: {}\n", written.error().to_string());
