@@ -30,9 +30,9 @@ std::string console_report(const HardReport& report) {
         out += " | robust: not needed\n";
     }
   };
-  const std::string header = fmt::format("  {:<22} {:<13} {:<7} {:<5} {:<7} {:>8} {:>8} {:>11} {:>12}  {}\n", "scenario",
-                                         "variant", "kind", "lang", "backend", "NaN/Inf", "ref n/f", "max rel",
-                                         "max ulps", "status");
+  const std::string header = fmt::format("  {:<22} {:<13} {:<7} {:<5} {:<13} {:>8} {:>8} {:>11} {:>12}  {}\n",
+                                         "scenario", "variant", "kind", "lang", "backend/path", "NaN/Inf", "ref n/f",
+                                         "max rel", "max ulps", "status");
   for (const HardRow& r : report.rows) {
     if (r.case_name != current) {
       if (!current.empty()) summary(current);
@@ -40,12 +40,12 @@ std::string console_report(const HardReport& report) {
       out += fmt::format("\n{}\n{}", current, header);
     }
     if (r.status == "error") {
-      out += fmt::format("  {:<22} {:<13} {:<7} {:<5} {:<7} error: {}\n", r.scenario, r.variant, r.kind, r.language,
-                         r.backend, r.message);
+      out += fmt::format("  {:<22} {:<13} {:<7} {:<5} {:<13} error: {}\n", r.scenario, r.variant, r.kind, r.language,
+                         r.backend + "/" + r.path, r.message);
       continue;
     }
-    out += fmt::format("  {:<22} {:<13} {:<7} {:<5} {:<7} {:>8} {:>8} {:>11.3g} {:>12}  {}{}\n", r.scenario, r.variant,
-                       r.kind, r.language, r.backend, r.error.render_nonfinite, r.error.reference_nonfinite,
+    out += fmt::format("  {:<22} {:<13} {:<7} {:<5} {:<13} {:>8} {:>8} {:>11.3g} {:>12}  {}{}\n", r.scenario,
+                       r.variant, r.kind, r.language, r.backend + "/" + r.path, r.error.render_nonfinite, r.error.reference_nonfinite,
                        r.error.max_relative, ulps_text(r.error), r.status,
                        r.message.empty() ? "" : " (" + r.message + ")");
   }

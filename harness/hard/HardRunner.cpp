@@ -183,22 +183,27 @@ class HardRunner {
       for (const auto& [language, files] : v->shaders) {
         if (!wanted(o_.languages, to_string(language))) continue;
         for (BackendSlot& b : backends_) {
-          HardRow row{.case_name = c.name, .scenario = s.name, .variant = v->name,
-                      .kind = v->name == kRobustVariant ? "robust" : "book", .language = to_string(language),
-                      .backend = b.name};
-          auto ok = render_row(c, *v, language, files, b, *mesh, values, ref, dir, row);
-          if (!ok) {
-            row.status = "error";
-            row.message = ok.error().to_string();
+          std::vector<ShaderPath> paths = b.backend ? (*b.backend)->paths(language) : std::vector<ShaderPath>{};
+          if (!o_.all_paths && paths.size() > 1) paths.resize(1);
+          if (paths.empty()) paths.push_back(ShaderPath::spirv);   // the row reports why the backend cannot draw
+          for (ShaderPath path : paths) {
+            HardRow row{.case_name = c.name, .scenario = s.name, .variant = v->name,
+                        .kind = v->name == kRobustVariant ? "robust" : "book", .language = to_string(language),
+                        .backend = b.name, .path = to_string(path)};
+            auto ok = render_row(c, *v, language, files, b, path, *mesh, values, ref, dir, row);
+            if (!ok) {
+              row.status = "error";
+              row.message = ok.error().to_string();
+            }
+            report.rows.push_back(std::move(row));
           }
-          report.rows.push_back(std::move(row));
         }
       }
     }
   }
 
   Result<void> render_row(const Case& c, const Variant& v, Language language, const ShaderFiles& files, BackendSlot& b,
-                          const Mesh& mesh, const NamedValues& values, const Result<ScenarioReference>* ref,
+                          ShaderPath path, const Mesh& mesh, const NamedValues& values, const Result<ScenarioReference>* ref,
                           const fs::path& dir, HardRow& row) {
     if (!b.backend) return std::unexpected(Error(b.backend.error()).in_backend(b.name));
     const CompiledProgram* program = nullptr;
@@ -207,13 +212,10 @@ class HardRunner {
     if (!*ref) return std::unexpected(ref->error());
     const ScenarioReference& reference = **ref;
 
-    const std::vector<ShaderPath> paths = (*b.backend)->paths(language);
-    if (paths.empty()) return fail(b.name, "no shader path for " + std::string(to_string(language)));
-    row.path = to_string(paths.front());
     auto bindings = c.bindings.find(language);
     static const BindingTable no_bindings;
     CaseUniforms uniforms(bindings == c.bindings.end() ? no_bindings : bindings->second, values, c.path);
-    auto rendered = (*b.backend)->render(DrawJob{*program, paths.front(), mesh, uniforms, reference.width, reference.height, nullptr});
+    auto rendered = (*b.backend)->render(DrawJob{*program, path, mesh, uniforms, reference.width, reference.height, nullptr});
     if (!rendered) return std::unexpected(Error(rendered.error()).in_backend(b.name + "/" + row.path));
 
     row.width = reference.width;
@@ -226,7 +228,7 @@ class HardRunner {
       row.message += fmt::format("{}max relative error {:.3g} > {:g}", row.message.empty() ? "" : "; ",
                                  row.error.max_relative, kRelativeTolerance);
     if (!dir.empty()) {
-      const std::string stem = fmt::format("{}-{}-{}", v.name, row.language, row.backend);
+      const std::string stem = fmt::format("{}-{}-{}-{}", v.name, row.language, row.backend, row.path);
       for (auto written : {write_png((dir / (stem + ".png")).string(), rendered->image),
                            // Relative error: the pass tolerance shows as mid grey.
                            write_png((dir / (stem + ".error.png")).string(),

@@ -33,6 +33,7 @@ constexpr double kRelativeTolerance = 1e-2;
 struct HardOptions {
   std::vector<std::string> cases, backends, languages, scenarios;   // empty = all
   int size = 128;
+  bool all_paths = false;                                           // every GL path, not only the first
   std::string out_dir;                                              // slice images, "" = none
   std::string cases_dir;                                            // "" = the library's
   std::function<void(const std::string&)> progress;                 // one line per step

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <string>
 
 #include <sys/wait.h>
@@ -49,6 +50,19 @@ TEST(HardCli, PassingModelExitsZeroAndWritesJson) {
   EXPECT_EQ(j["models"][0]["robust"], "not needed");
   EXPECT_TRUE(j["models"][0]["robust_variant"].is_null());
   EXPECT_TRUE(j["scenarios"].contains("sphere_perpendicular"));
+}
+
+TEST(HardCli, AllPathsGivesARowPerGlPath) {
+  const fs::path json = fs::temp_directory_path() / ("hard_cli_paths_" + std::to_string(::getpid()) + ".json");
+  const CliRun r = shaderbed("--case lambert --lang glsl --backend gl --scenario sphere_perpendicular --size 17 "
+                             "--all-paths --json " + json.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::ifstream in(json);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  fs::remove(json);
+  std::set<std::string> paths;
+  for (const auto& row : j["rows"]) paths.insert(row["path"].get<std::string>());
+  EXPECT_EQ(paths, (std::set<std::string>{"glsl", "spirv", "cross"}));
 }
 
 TEST(HardCli, FailingRowExitsOne) {

@@ -25,6 +25,8 @@ Command add_hard_command(CLI::App& app) {
   cmd->add_option("--lang", o->languages, "glsl, hlsl, cg (default: all)")->delimiter(',');
   cmd->add_option("--scenario", o->scenarios, "Scenarios to run (default: all that apply)")->delimiter(',');
   cmd->add_option("--cases-dir", o->cases_dir, "Folder of case files (default: the library's shaders/cases)");
+  cmd->add_flag("--all-paths", o->all_paths,
+                "Every GL path (native GLSL, SPIR-V, SPIRV-Cross GLSL), not only the first of each backend");
   cmd->add_option("--size", o->size, "Slice and image size in pixels (slices round up to odd)")->capture_default_str();
   cmd->add_option("--json", *json_path, "Write the report as JSON");
   cmd->add_option("--out", o->out_dir, "Write images (render, reference, relative error, value mask) here");
