@@ -320,8 +320,17 @@ class Writer {
       std::vector<std::string> t;
       for (const auto& [stage, ms] : r.time_ms)
         t.push_back(fmt::format("{} {:.2f}{}", escape(stage), ms, shared_stage(stage) ? "*" : ""));
-      row("time (ms)", join_nonempty(t, ", ") + " &nbsp;<small>(* shared by cells)</small>");
+      row("time (ms)", join_nonempty(t, ", ") + " &nbsp;<small>(* shared by cells)</small>" +
+                           (r.program_cached ? " &nbsp;<small>pipeline reused from an earlier cell</small>" : ""));
     }
+    if (r.gpu.runs > 0)
+      row("draw (ms)",
+          fmt::format("wall {:.3f} [{:.3f}, {:.3f}], {} {:.3f} [{:.3f}, {:.3f}] &nbsp;<small>median [{:.0f}% CI] of {} "
+                      "runs after {} warm-up</small>",
+                      r.gpu.wall.median, r.gpu.wall.low, r.gpu.wall.high, escape(r.gpu.clock), r.gpu.device.median,
+                      r.gpu.device.low, r.gpu.device.high, 100 * r.gpu.wall.level, r.gpu.runs, r.gpu.warmup));
+    if (r.vertex_instructions + r.fragment_instructions > 0)
+      row("SPIR-V instructions", fmt::format("vertex {}, fragment {}", r.vertex_instructions, r.fragment_instructions));
     if (!r.vertex_spirv_hash.empty() || !r.fragment_spirv_hash.empty())
       row("SPIR-V hash", fmt::format("vertex <code>{}</code> fragment <code>{}</code>", escape(r.vertex_spirv_hash),
                                      escape(r.fragment_spirv_hash)));

@@ -153,6 +153,9 @@ inline RunReport sample_report(const fs::path& out, int size = 48) {
     r.interior_threshold = 2e-3;
     r.silhouette_threshold = 2e-2;
     r.time_ms = {{"compile", 3.5}, {"reference", 12.25}, {"build", 1.5}, {"draw", 0.75}, {"readback", 0.25}, {"compare", 0.5}};
+    r.gpu = {"timestamp queries", 1, 5, {0.625, 0.5, 0.875, 0.9375}, {0.75, 0.6875, 1.125, 0.9375}};
+    r.vertex_instructions = 10;
+    r.fragment_instructions = 34;
     r.metrics.interior_pixels = 1200;
     r.metrics.silhouette_pixels = 180;
     r.metrics.covered_pixels = r.metrics.reference_covered_pixels = 1380;

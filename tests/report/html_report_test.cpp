@@ -144,7 +144,9 @@ TEST(HtmlReport, WritesOneSelfContainedPageAndCopiesSources) {
             std::string::npos);
   for (const char* needle : {"glslang 11:12.0.0", "SPIRV-Tools v2022.4", "spirv-cross 2022.12.01", "Mesa 22.3.6 llvmpipe",
                              "<b>6</b> cells", "<b>2</b> passed", "<b>2</b> failed", "<b>1</b> known failures",
-                             "<b>1</b> errors", "known failure</b>: SPIRV-Cross 2022 drops precise"})
+                             "<b>1</b> errors", "known failure</b>: SPIRV-Cross 2022 drops precise",
+                             "wall 0.750 [0.688, 1.125], timestamp queries 0.625 [0.500, 0.875]",
+                             "vertex 10, fragment 34"})
     EXPECT_NE(html.find(needle), std::string::npos) << needle;
   // The same report gives the same page.
   ASSERT_TRUE(write_html(report, (dir / "html2").string()));
@@ -167,6 +169,21 @@ TEST(HtmlReport, ImageBudgetKeepsFailuresFirst) {
   const std::string failure = html.substr(card, html.find("</details>", card) - card);
   EXPECT_EQ(count(failure, "data-img=\""), 3u) << "reference, render and error of the failure are embedded";
   EXPECT_GE(count(failure, "data-file=\""), 2u) << "the other renders are linked";
+  fs::remove_all(dir);
+}
+
+TEST(HtmlReport, ChartsAreInlinedBeforeTheFailures) {
+  const fs::path dir = test::fresh_dir("html_chart");
+  const RunReport report = test::sample_report(dir / "out");
+  HtmlOptions options;
+  options.charts.push_back({"oren_nayar", "<svg viewBox=\"0 0 10 10\"><circle r=\"1\"/></svg>", "time <against> error"});
+  ASSERT_TRUE(write_html(report, (dir / "html").string(), options));
+  const std::string html = slurp(dir / "html" / "index.html");
+  const size_t chart = html.find("<svg viewBox=\"0 0 10 10\"><circle r=\"1\"/></svg>");
+  ASSERT_NE(chart, std::string::npos);
+  EXPECT_LT(chart, html.find("id=\"sec-fail\""));
+  EXPECT_NE(html.find("time &lt;against&gt; error"), std::string::npos);
+  EXPECT_NE(html.find("href=\"#charts\""), std::string::npos);
   fs::remove_all(dir);
 }
 
