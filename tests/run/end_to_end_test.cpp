@@ -177,6 +177,32 @@ TEST(EndToEnd, TwoShardsMergedByTheCliEqualOneRun) {
   fs::remove_all(dir);
 }
 
+TEST(EndToEnd, OneWorkerAndThreeWorkersGiveTheSameResults) {
+  const fs::path dir = fs::temp_directory_path() / ("shaderbed_jobs_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  const std::string common = " --case lambert,phong,warn --shape sphere,cone --size 40 --repeat 2 ";
+  ASSERT_EQ(shaderbed_cli("run" + common + "--jobs 1 --json " + (dir / "one.json").string()).first, 0);
+  ASSERT_EQ(shaderbed_cli("run" + common + "--jobs 3 --json " + (dir / "three.json").string()).first, 0);
+  auto load = [&](const char* name) { return nlohmann::json::parse(std::ifstream(dir / name)); };
+  const nlohmann::json one = load("one.json"), three = load("three.json");
+  EXPECT_EQ(one["workers"], 1);
+  EXPECT_EQ(three["workers"], 3);
+  ASSERT_EQ(one["results"].size(), three["results"].size());
+  for (size_t i = 0; i < one["results"].size(); ++i) {
+    nlohmann::json a = one["results"][i], b = three["results"][i];
+    // Every cell was timed (2 runs) and, with a worker per case x variant, each program's
+    // pipeline was built exactly where the single worker built it too.
+    EXPECT_EQ(a["gpu_ms"]["runs"], 2) << i;
+    EXPECT_EQ(a["program_cached"], b["program_cached"]) << i;
+    for (const char* timing : {"time_ms", "gpu_ms"}) {
+      a.erase(timing);
+      b.erase(timing);
+    }
+    EXPECT_EQ(a, b) << i;   // images, metrics and verdicts do not depend on the workers
+  }
+  fs::remove_all(dir);
+}
+
 TEST(EndToEnd, BadCaseFileIsOneLineWithFileAndLine) {
   const fs::path dir = fs::temp_directory_path() / ("shaderbed_badcase_" + std::to_string(::getpid()));
   fs::create_directories(dir / "cases");
