@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <cmath>
 #include <filesystem>
 #include <limits>
 #include <memory>
+#include <optional>
+#include <span>
 
 #include <fmt/format.h>
 
@@ -59,7 +62,10 @@ ScenarioReference slice_reference(const Slice& slice, const Case& c, const std::
                       std::vector<PixelJudgement>(slice.pixels.size(), PixelJudgement::measured)};
   const bool point = point_light(c.model);
   const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<std::map<std::string, std::vector<double>>> rows;   // the parameters of each row
+  for (int y = 0; y < slice.height; ++y) rows.push_back(row_params(slice, y, params));
   for (size_t i = 0; i < slice.pixels.size(); ++i) {
+    const auto& params = rows[i / size_t(slice.width)];
     const reference::Configuration config = pixel_configuration(slice, slice.pixels[i], point);
     std::expected<glm::dvec3, std::string> rgb;
     if (mode == LightingMode::per_pixel) {
@@ -87,6 +93,25 @@ ScenarioReference slice_reference(const Slice& slice, const Case& c, const std::
       r.judgement[i] = PixelJudgement::finite_only;
   }
   return r;
+}
+
+// A half_angle slice, drawn a row at a time with that row's parameter value (a uniform
+// cannot change within one draw), assembled into one image.
+Result<RenderOutput> draw_by_rows(const Slice& slice, const NamedValues& values,
+                                  const std::function<Result<RenderOutput>(const Mesh&, const NamedValues&)>& draw) {
+  RenderOutput assembled;
+  assembled.image = Image(slice.width, slice.height);
+  for (int y = 0; y < slice.height; ++y) {
+    NamedValues row = values;
+    std::vector<float>& value = row[slice.spec.row_param];
+    value.assign(std::max<size_t>(value.size(), 1), float(slice.row_values[size_t(y)]));
+    auto out = draw(row_mesh(slice, y), row);
+    if (!out) return std::unexpected(out.error());
+    const size_t first = size_t(y) * slice.width, count = size_t(slice.width);
+    std::copy_n(out->image.rgba.begin() + first * 4, count * 4, assembled.image.rgba.begin() + first * 4);
+    std::copy_n(out->image.coverage.begin() + first, count, assembled.image.coverage.begin() + first);
+  }
+  return assembled;
 }
 
 ScenarioReference mesh_reference(const ReferenceImage& ref) {
@@ -125,6 +150,21 @@ Image relative_error_image(const Image& render, const ScenarioReference& r, doub
     out.rgba[i * 4 + 3] = 1;
   }
   return out;
+}
+
+// A half_angle slice's rows run from the broadest lobe to the sharpest: the value of its
+// row parameter at the first row that goes wrong, or nullopt when none does.
+std::optional<double> first_failing_row(const Slice& slice, const Image& image, const ScenarioReference& r) {
+  const size_t w = size_t(slice.width);
+  for (int y = 0; y < slice.height; ++y) {
+    Image row(slice.width, 1);
+    std::copy_n(image.rgba.begin() + y * w * 4, w * 4, row.rgba.begin());
+    std::copy_n(image.coverage.begin() + y * w, w, row.coverage.begin());
+    const NumericalError e = numerical_error(row, std::span(r.rgba).subspan(y * w * 4, w * 4),
+                                             std::span(r.judgement).subspan(y * w, w));
+    if (e.nonfinite_mismatch > 0 || e.max_relative > kRelativeTolerance) return slice.row_values[size_t(y)];
+  }
+  return std::nullopt;
 }
 
 class HardRunner {
@@ -190,7 +230,7 @@ class HardRunner {
             HardRow row{.case_name = c.name, .scenario = s.name, .variant = v->name,
                         .kind = v->name == kRobustVariant ? "robust" : "book", .language = to_string(language),
                         .backend = b.name, .path = to_string(path)};
-            auto ok = render_row(c, *v, language, files, b, path, *mesh, values, ref, dir, row);
+            auto ok = render_row(c, *v, language, files, b, path, slice ? &*slice : nullptr, *mesh, values, ref, dir, row);
             if (!ok) {
               row.status = "error";
               row.message = ok.error().to_string();
@@ -203,7 +243,7 @@ class HardRunner {
   }
 
   Result<void> render_row(const Case& c, const Variant& v, Language language, const ShaderFiles& files, BackendSlot& b,
-                          ShaderPath path, const Mesh& mesh, const NamedValues& values, const Result<ScenarioReference>* ref,
+                          ShaderPath path, const Slice* slice, const Mesh& mesh, const NamedValues& values, const Result<ScenarioReference>* ref,
                           const fs::path& dir, HardRow& row) {
     if (!b.backend) return std::unexpected(Error(b.backend.error()).in_backend(b.name));
     const CompiledProgram* program = nullptr;
@@ -214,9 +254,15 @@ class HardRunner {
 
     auto bindings = c.bindings.find(language);
     static const BindingTable no_bindings;
-    CaseUniforms uniforms(bindings == c.bindings.end() ? no_bindings : bindings->second, values, c.path);
-    auto rendered = (*b.backend)->render(DrawJob{*program, path, mesh, uniforms, reference.width, reference.height, nullptr});
-    if (!rendered) return std::unexpected(Error(rendered.error()).in_backend(b.name + "/" + row.path));
+    const BindingTable& table = bindings == c.bindings.end() ? no_bindings : bindings->second;
+    const auto draw = [&](const Mesh& m, const NamedValues& named) -> Result<RenderOutput> {
+      CaseUniforms uniforms(table, named, c.path);
+      auto out = (*b.backend)->render(DrawJob{*program, path, m, uniforms, reference.width, reference.height, nullptr});
+      if (!out) return std::unexpected(Error(out.error()).in_backend(b.name + "/" + row.path));
+      return out;
+    };
+    auto rendered = slice && !slice->row_values.empty() ? draw_by_rows(*slice, values, draw) : draw(mesh, values);
+    if (!rendered) return std::unexpected(rendered.error());
 
     row.width = reference.width;
     row.error = numerical_error(rendered->image, reference.rgba, reference.judgement);
@@ -227,6 +273,9 @@ class HardRunner {
     if (!error_ok)
       row.message += fmt::format("{}max relative error {:.3g} > {:g}", row.message.empty() ? "" : "; ",
                                  row.error.max_relative, kRelativeTolerance);
+    if (slice && !slice->row_values.empty() && row.status == "fail")
+      if (auto onset = first_failing_row(*slice, rendered->image, reference))
+        row.message += fmt::format(", from {} = {:.3g} on", slice->spec.row_param, *onset);
     if (!dir.empty()) {
       const std::string stem = fmt::format("{}-{}-{}-{}", v.name, row.language, row.backend, row.path);
       for (auto written : {write_png((dir / (stem + ".png")).string(), rendered->image),

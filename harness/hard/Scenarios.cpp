@@ -25,6 +25,19 @@ std::map<std::string, std::vector<double>> sharp_params(const std::string& model
   return {};
 }
 
+// The lobe parameter's range for the half-angle map, broad (top row) to sharpest (bottom).
+struct LobeRange {
+  std::string param;
+  double broad = 0, sharp = 0;
+};
+std::optional<LobeRange> lobe_range(const std::string& model) {
+  if (model == "phong" || model == "blinn_phong" || model == "schlick") return LobeRange{"power", 1, 1e4};
+  if (model == "cook_torrance") return LobeRange{"slope_m", 1, 1e-3};
+  if (model == "ward_iso") return LobeRange{"roughness", 0.5, 1e-3};
+  if (model == "ward_aniso") return LobeRange{"roughness_xy", 0.5, 1e-3};
+  return std::nullopt;
+}
+
 // Half-width of the lobe slice: ~5 lobe widths. Power 1e4 has cos^n(2a) = e^-1 at
 // a = 0.007; m = 0.001 has exp(-(a/m)^2) = e^-25 at a = 0.005.
 double lobe_radius(const std::string& model) {
@@ -77,6 +90,18 @@ std::vector<Scenario> scenarios_for(const std::string& model, int size) {
     out.push_back({"lobe_sharp", "normals within a few lobe widths of H: the peak of the sharpest lobe, N.H -> 1",
                    lobe, std::nullopt, sharp});
   }
+  if (auto range = lobe_range(model)) {
+    SliceSpec map = sphere(kPerpendicular);
+    map.layout = NormalLayout::half_angle;
+    map.row_param = range->param;
+    map.row_first = range->broad;
+    map.row_last = range->sharp;
+    out.push_back({"lobe_map",
+                   "x = angle between N and H (log, 1e-5 to 1.5 rad), y = " + range->param +
+                       " (log, broad at the top to sharpest at the bottom): where in the lobe, and from which "
+                       "sharpness on, a formula loses precision",
+                   map, std::nullopt, {}});
+  }
   if (is_point_light(model)) {
     SliceSpec near{.layout = NormalLayout::plane, .plane_normal = glm::dvec3(0, 1, 0), .light_height = 1e-6};
     near.to_eye = kView;
@@ -103,7 +128,8 @@ std::vector<Scenario> scenarios_for(const std::string& model, int size) {
 
 std::vector<std::string> scenario_names() {
   return {"sphere_perpendicular", "sphere_opposite", "sphere_coincident", "long_normals", "sphere_sharp",
-          "lobe_sharp",           "light_near",      "light_on_surface",  "cone_apex",    "thin_torus"};
+          "lobe_sharp",           "lobe_map",        "light_near",        "light_on_surface", "cone_apex",
+          "thin_torus"};
 }
 
 }  // namespace shaderbed::hard

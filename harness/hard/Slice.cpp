@@ -33,6 +33,7 @@ const char* to_string(NormalLayout l) {
   switch (l) {
     case NormalLayout::sphere: return "sphere";
     case NormalLayout::lobe: return "lobe";
+    case NormalLayout::half_angle: return "half_angle";
     case NormalLayout::plane: return "plane";
   }
   return "?";
@@ -51,6 +52,8 @@ Slice make_slice(const SliceSpec& spec, int size) {
   const glm::dvec3 sum = l + v;
   const glm::dvec3 half = glm::dot(sum, sum) > 1e-20 ? glm::normalize(sum) : v;
   const glm::dvec3 h1 = perpendicular(half, l), h2 = glm::cross(half, h1);
+  // Half-angle map: N turns from H toward B, perpendicular to the L-V plane.
+  const glm::dvec3 across = perpendicular(half, glm::cross(l, v));
   const glm::dvec3 plane_n = glm::normalize(spec.plane_normal);
   const glm::dvec3 plane_t = perpendicular(plane_n, glm::dvec3(1, 0, 0));
 
@@ -79,6 +82,11 @@ Slice make_slice(const SliceSpec& spec, int size) {
           t = perpendicular(n, h1);
           break;
         }
+        case NormalLayout::half_angle:
+          p.half_angle = kMinHalfAngle * std::pow(kMaxHalfAngle / kMinHalfAngle, double(x) / (w - 1));
+          n = std::cos(p.half_angle) * half + std::sin(p.half_angle) * across;
+          t = perpendicular(n, h1);
+          break;
         case NormalLayout::plane:
           n = plane_n;
           t = plane_t;
@@ -100,6 +108,10 @@ Slice make_slice(const SliceSpec& spec, int size) {
       }
       for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) s.mesh.indices.push_back(first + i);
     }
+
+  if (spec.layout == NormalLayout::half_angle)
+    for (int y = 0; y < h; ++y)
+      s.row_values.push_back(spec.row_first * std::pow(spec.row_last / spec.row_first, double(y) / (h - 1)));
 
   // clip = (x / g, y / g, 0.5, 1): the grid fills the screen at depth 0.5.
   glm::dmat4 transform(1.0);
@@ -139,6 +151,25 @@ reference::Configuration pixel_configuration(const Slice& slice, const SlicePixe
     c.to_light = light_vector;
   }
   return c;
+}
+
+std::map<std::string, std::vector<double>> row_params(const Slice& slice, int y,
+                                                      std::map<std::string, std::vector<double>> params) {
+  if (slice.row_values.empty()) return params;
+  std::vector<double>& value = params[slice.spec.row_param];
+  if (value.empty()) value.resize(1);
+  for (double& component : value) component = slice.row_values[size_t(y)];
+  return params;
+}
+
+Mesh row_mesh(const Slice& slice, int y) {
+  Mesh row;
+  row.name = slice.mesh.name + "-row";
+  const size_t first = size_t(y) * slice.width * 4, count = size_t(slice.width) * 4;
+  row.vertices.assign(slice.mesh.vertices.begin() + first, slice.mesh.vertices.begin() + first + count);
+  for (uint32_t q = 0; q < uint32_t(slice.width); ++q)
+    for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) row.indices.push_back(q * 4 + i);
+  return row;
 }
 
 }  // namespace shaderbed::hard

@@ -18,9 +18,15 @@
 //  - lobe: normals in a small cone around H = normalize(L + V) (gnomonic: pixel offsets
 //    are tangents of the angle from H, up to lobe_radius at the edge mid-points), the
 //    centre pixel exactly H: the peak of a sharp specular lobe.
+//  - half_angle: a map of a lobe against a parameter: column x is the angle between N and
+//    H, log-spaced from kMinHalfAngle (left) to kMaxHalfAngle (right), N turning away from
+//    H across the L-V plane (so N.L = N.V stay equal and positive); row y is the value of
+//    the case parameter `row_param`, log-spaced from row_first (top) to row_last
+//    (bottom). The runner draws the slice a row at a time, each with its row's value.
 //  - plane: one normal for every pixel and a point light at light_height above the
 //    centre pixel along N (shining along -N for spot and Warn): the distance to the light
 //    runs from light_height at the centre to ~kGridHalfSize at the corners.
+#include <map>
 #include <string>
 #include <vector>
 
@@ -36,7 +42,10 @@ constexpr double kGridHalfSize = 1.0 / 1024;   // object-space half width of the
 constexpr double kEyeDistance = 8192;           // eye position = kEyeDistance * V
 constexpr double kLightDistance = 50;           // sphere/lobe: point light at 50 L, as the book's scene
 
-enum class NormalLayout { sphere, lobe, plane };
+constexpr double kMinHalfAngle = 1e-5;          // half_angle: radians from H at the left column
+constexpr double kMaxHalfAngle = 1.5;           // and at the right one
+
+enum class NormalLayout { sphere, lobe, half_angle, plane };
 const char* to_string(NormalLayout);
 
 struct SliceSpec {
@@ -45,6 +54,8 @@ struct SliceSpec {
   NormalLayout layout = NormalLayout::sphere;
   double lobe_radius = 0.01;       // lobe: angle from H at the edge mid-points, radians
   bool long_normals = false;       // normal attributes 1 + {1e-6, 1e-5, 1e-4} long, by (x + y) mod 3
+  std::string row_param;           // half_angle: the case parameter that changes down the rows
+  double row_first = 1, row_last = 1;
   glm::dvec3 plane_normal{0, 0, 1};
   double light_height = 1e-6;      // plane: light above the centre pixel; 0 puts it on the surface
 };
@@ -53,6 +64,7 @@ struct SlicePixel {
   glm::dvec3 claimed_normal;       // unit, in double, before rounding to float
   double polar = 0;                // sphere: angle between N and V
   double azimuth = 0;              // sphere: azimuth of N about V, 0 on L's side
+  double half_angle = 0;           // half_angle: angle between N and H
   glm::vec3 normal;                // the vertex attribute (length 1, or 1 + eps)
   glm::vec3 tangent;               // unit, perpendicular to the claimed normal
   glm::dvec3 position;             // pixel centre, object space
@@ -64,6 +76,7 @@ struct Slice {
   Mesh mesh;                       // 4 vertices, 2 triangles per pixel, row-major from the top
   NamedValues uniforms;            // transform, world, light_vector, eye_position, light_position
   std::vector<SlicePixel> pixels;  // width * height, row 0 = top
+  std::vector<double> row_values;  // half_angle: spec.row_param's value per row; empty otherwise
 };
 
 // `size` is the requested width and height; it is rounded up to an odd number.
@@ -75,5 +88,14 @@ Slice make_slice(const SliceSpec& spec, int size);
 // `at` replaces the pixel centre (per-vertex variants shade the quad's corners).
 reference::Configuration pixel_configuration(const Slice& slice, const SlicePixel& pixel, bool point_light,
                                              const glm::dvec3* at = nullptr);
+
+// The case parameters at row y: `params` with the slice's row parameter set to that row's
+// value in every component (roughness_xy = (v, v)); `params` itself without a row parameter.
+std::map<std::string, std::vector<double>> row_params(const Slice& slice, int y,
+                                                      std::map<std::string, std::vector<double>> params);
+
+// The part of the slice's mesh that covers row y (the runner draws half_angle slices a
+// row at a time).
+Mesh row_mesh(const Slice& slice, int y);
 
 }  // namespace shaderbed::hard

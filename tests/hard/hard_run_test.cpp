@@ -88,5 +88,25 @@ TEST(HardRun, UnknownNamesAreErrors) {
   EXPECT_FALSE(run_hard_cases({.cases = {"lambert"}, .size = 2}));
 }
 
+TEST(HardRun, LobeMapFindsTheBookFormulaLosingThePeakOfSharpLobes) {
+  HardOptions o{.cases = {"cook_torrance"}, .backends = {"vulkan"}, .languages = {"glsl"}, .scenarios = {"lobe_map"},
+                .size = 33};
+  auto report = run_hard_cases(o);
+  ASSERT_TRUE(report) << report.error().to_string();
+  const HardRow* book = nullptr;
+  const HardRow* robust = nullptr;
+  for (const HardRow& r : report->rows) {
+    if (r.variant == "pixel") book = &r;
+    if (r.variant == "pixel_robust") robust = &r;
+  }
+  ASSERT_TRUE(book && robust);
+  ASSERT_EQ(book->status == "error" || robust->status == "error", false) << book->message << robust->message;
+  // The same map, drawn a row at a time with each row's slope: the book's N.H form is far
+  // off near the peak of the sharp rows, the cross-product form is not.
+  EXPECT_EQ(book->status, "fail");
+  EXPECT_EQ(robust->status, "pass") << robust->message;
+  EXPECT_GT(book->error.max_relative, 100 * robust->error.max_relative);
+}
+
 }  // namespace
 }  // namespace shaderbed::hard

@@ -1,4 +1,5 @@
 // Slice geometry: every pixel's configuration has the angles the slice claims for it.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -90,6 +91,35 @@ TEST(SliceGeometry, LongNormalsAreLongerByTheirEpsilon) {
     const double eps = std::pow(10.0, -6 + i);
     EXPECT_NEAR(glm::length(glm::dvec3(s.pixels[size_t(i)].normal)), 1 + eps, 1e-7) << i;
   }
+}
+
+TEST(SliceGeometry, HalfAngleMapTurnsNAwayFromHAndSetsARowParameter) {
+  SliceSpec spec = kPerpendicular;
+  spec.layout = NormalLayout::half_angle;
+  spec.row_param = "slope_m";
+  spec.row_first = 1;
+  spec.row_last = 1e-3;
+  const Slice s = make_slice(spec, 33);
+  const glm::dvec3 l = glm::normalize(spec.to_light), v = glm::normalize(spec.to_eye), h = glm::normalize(l + v);
+  ASSERT_EQ(s.row_values.size(), 33u);
+  EXPECT_DOUBLE_EQ(s.row_values.front(), 1);
+  EXPECT_NEAR(s.row_values.back(), 1e-3, 1e-15);
+  EXPECT_NEAR(s.row_values[16], std::sqrt(1e-3), 1e-12);   // log-spaced: the middle row is the geometric mean
+  for (int x = 0; x < s.width; x += 4) {
+    const SlicePixel& p = s.pixels[size_t(7) * s.width + x];
+    EXPECT_NEAR(p.half_angle, kMinHalfAngle * std::pow(kMaxHalfAngle / kMinHalfAngle, x / 32.0), 1e-12);
+    EXPECT_NEAR(angle(p.claimed_normal, h), p.half_angle, 1e-9) << x;
+    EXPECT_NEAR(glm::dot(p.claimed_normal, l), glm::dot(p.claimed_normal, v), 1e-12) << x;   // across the L-V plane
+    EXPECT_GT(glm::dot(p.claimed_normal, l), 0.0) << x;
+  }
+  // Each row's parameters carry its value in every component; the mesh of a row is its quads.
+  const auto params = row_params(s, 32, {{"slope_m", {0.5}}, {"roughness_xy", {0.2, 0.3}}});
+  EXPECT_NEAR(params.at("slope_m")[0], 1e-3, 1e-15);
+  EXPECT_EQ(params.at("roughness_xy"), (std::vector<double>{0.2, 0.3}));
+  const Mesh row = row_mesh(s, 5);
+  ASSERT_EQ(row.vertices.size(), 33u * 4u);
+  EXPECT_EQ(row.vertices.front().position, s.mesh.vertices[5 * 33 * 4].position);
+  EXPECT_EQ(*std::max_element(row.indices.begin(), row.indices.end()), 33u * 4u - 1u);
 }
 
 }  // namespace
