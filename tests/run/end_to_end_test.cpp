@@ -203,6 +203,24 @@ TEST(EndToEnd, OneWorkerAndThreeWorkersGiveTheSameResults) {
   fs::remove_all(dir);
 }
 
+TEST(EndToEnd, ChartsFromSweepsGoIntoTheHtmlReport) {
+  const fs::path dir = fs::temp_directory_path() / ("shaderbed_chart_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "lut_trade_off.svg") << "<svg viewBox=\"0 0 4 4\"><rect id=\"marker-1234\"/></svg>\n";
+  std::ofstream(dir / "page.svg") << "<svg><script>alert(1)</script></svg>\n";
+  const std::string common = " --case lambert --shape cube --variant pixel --lang glsl --size 32 --html " + (dir / "html").string();
+  ASSERT_EQ(shaderbed_cli("run" + common + " --chart " + (dir / "lut_trade_off.svg").string()).first, 0);
+  std::ifstream in(dir / "html" / "index.html");
+  const std::string html((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(html.find("<rect id=\"marker-1234\"/>"), std::string::npos);
+  EXPECT_NE(html.find("lut_trade_off"), std::string::npos);
+  auto [status, out] = shaderbed_cli("run" + common + " --chart " + (dir / "page.svg").string());
+  EXPECT_EQ(status, 2) << out;
+  EXPECT_NE(out.find("page.svg"), std::string::npos) << out;
+  fs::remove_all(dir);
+}
+
 TEST(EndToEnd, BadCaseFileIsOneLineWithFileAndLine) {
   const fs::path dir = fs::temp_directory_path() / ("shaderbed_badcase_" + std::to_string(::getpid()));
   fs::create_directories(dir / "cases");

@@ -29,6 +29,7 @@ Command add_merge_command(CLI::App& app) {
   args->outputs.add_options(cmd);
   cmd->add_flag("--timing", args->timing, "Show each cell's draw and build times in the table");
   return {cmd, [args] {
+            if (!args->outputs.load_charts()) return kExitBadInput;
             RunReport merged;
             std::set<std::string> seen;
             for (const std::string& path : args->inputs) {

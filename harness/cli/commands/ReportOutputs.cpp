@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "core/ChildProcess.h"
 #include "report/HtmlReport.h"
 #include "report/JsonReport.h"
 #include "report/JunitReport.h"
@@ -14,6 +15,24 @@ void ReportOutputs::add_options(CLI::App* cmd) {
   cmd->add_option("--json", json, "Write the results as JSON (schema 2) to this file");
   cmd->add_option("--junit", junit, "Write JUnit XML (one testcase per cell) to this file");
   cmd->add_option("--html", html, "Write a self-contained HTML report (index.html) into this folder");
+  cmd->add_option("--chart", charts,
+                  "An SVG chart to show in the HTML report's \"Speed against error\" section (repeatable), e.g. "
+                  "one written by 'shaderbed sweep --chart'")
+      ->check(CLI::ExistingFile);
+}
+
+bool ReportOutputs::load_charts() {
+  loaded_charts.clear();
+  for (const std::string& svg : charts) {
+    std::string text = read_text_file(svg);
+    // Only a self-contained SVG (gnuplot's, as sweep writes it) may go into the page as it is.
+    if (text.find("<svg") == std::string::npos || text.find("<script") != std::string::npos) {
+      fmt::print(stderr, "shaderbed: {}: --chart needs an SVG without scripts\n", svg);
+      return false;
+    }
+    loaded_charts.push_back({std::filesystem::path(svg).stem().string(), std::move(text), svg});
+  }
+  return true;
 }
 
 bool ReportOutputs::write(const RunReport& report) const {
@@ -28,7 +47,11 @@ bool ReportOutputs::write(const RunReport& report) const {
   bool ok = true;
   if (!json.empty()) ok &= done(write_json(report, json), "results", json);
   if (!junit.empty()) ok &= done(write_junit(report, junit), "junit", junit);
-  if (!html.empty()) ok &= done(write_html(report, html), "html", (std::filesystem::path(html) / "index.html").string());
+  if (!html.empty()) {
+    auto written = write_html(report, html, HtmlOptions{.charts = loaded_charts});
+    ok &= done(written ? Result<void>{} : std::unexpected(written.error()), "html",
+               (std::filesystem::path(html) / "index.html").string());
+  }
   return ok;
 }
 

@@ -1,17 +1,24 @@
 #pragma once
 // The report files `run` and `merge` both write: --json, --junit, --html.
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
+#include "report/HtmlReport.h"
 #include "report/Results.h"
 
 namespace shaderbed {
 
 struct ReportOutputs {
   std::string json, junit, html;
+  std::vector<std::string> charts;   // SVG charts (e.g. from `sweep --chart`) to show in the HTML report
+  std::vector<HtmlChart> loaded_charts;
 
   void add_options(CLI::App* cmd);
+  // Reads the --chart files before any work is done; false (after printing why) when one is
+  // not a self-contained SVG.
+  bool load_charts();
   // Writes what was asked for; prints where; false (after printing the error) on failure.
   bool write(const RunReport& report) const;
 };

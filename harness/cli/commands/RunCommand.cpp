@@ -79,6 +79,7 @@ Command add_run_command(CLI::App& app) {
       ->check(CLI::Range(0, 256));
 
   return {cmd, [args] {
+            if (!args->outputs.load_charts()) return kExitBadInput;
             Progress progress;
             RunOptions options = args->options;
             options.on_cell = [&](size_t done, size_t total, const CellResult&) { progress.update(done, total); };
