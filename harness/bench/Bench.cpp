@@ -34,6 +34,7 @@ Result<BenchReport> run_bench(const BenchOptions& o) {
   run.cases = o.cases;
   run.size = o.size;
   run.jobs = o.jobs;
+  run.out_dir = o.out_dir;
   // Each draw made once, untimed: timed repeats would be time the parts do not show.
   run.timing = {.warmup = 0, .runs = 0};
   if (o.on_cell) run.on_cell = [&](size_t done, size_t total, const CellResult&) { o.on_cell(done, total); };

@@ -20,6 +20,7 @@ struct BenchOptions {
   std::vector<std::string> cases;        // the suite's cases; empty = all (the default suite)
   int size = 256;
   int jobs = 0;                          // suite workers; 0 = one per core, as `run`
+  std::string out_dir;                   // "" = no images written (no I/O part)
   std::vector<ComparedCell> compared;    // cells for the reference-vs-drivers timing
   int runs = 9;                          // timed repeats of those
   // Progress: a step starting, and the suite's cells as they finish.

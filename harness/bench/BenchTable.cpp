@@ -32,9 +32,6 @@ std::string suite_section(const BenchReport& r) {
     const char* where = driver ? "drivers" : "shaderbed";
     for (const CostPart& p : s.parts)
       if (p.owner == owner) row(where, p.description, p.ms, fmt::format("{}", p.count));
-    if (!driver)
-      out += fmt::format("  {:<10} {:<44} {:>11} {:>6}   not written: the bench passes no --out\n", where, "image I/O",
-                         "0", "-");
     row(where, driver ? "= the drivers' work" : "= shaderbed's own work", driver ? s.driver_ms : s.shaderbed_ms, "");
   }
   row("", "= summed parts", s.summed_ms, "");

@@ -24,6 +24,7 @@ SuiteCost suite_cost(const RunReport& report) {
   CostPart compile{"compile", "compile: glslang, SPIRV-Tools, SPIRV-Cross", CostOwner::shaderbed};
   CostPart reference{"reference", "CPU reference render (double)", CostOwner::shaderbed};
   CostPart compare{"compare", "compare with the reference", CostOwner::shaderbed};
+  CostPart io{"io", "image I/O: renders and error images (--out)", CostOwner::shaderbed};
 
   // The first cell of a program / group carries the time the others copy.
   std::set<std::tuple<std::string, std::string, std::string>> programs, groups;
@@ -43,13 +44,13 @@ SuiteCost suite_cost(const RunReport& report) {
       build.ms += time_of(r, "build");
       ++build.count;
     }
-    for (CostPart* per_cell : {&draw, &readback, &compare})
+    for (CostPart* per_cell : {&draw, &readback, &compare, &io})
       if (r.time_ms.contains(per_cell->name)) {
         per_cell->ms += time_of(r, per_cell->name);
         ++per_cell->count;
       }
   }
-  cost.parts = {build, draw, readback, compile, reference, compare};
+  cost.parts = {build, draw, readback, compile, reference, compare, io};
   for (const CostPart& p : cost.parts) (p.owner == CostOwner::driver ? cost.driver_ms : cost.shaderbed_ms) += p.ms;
   cost.summed_ms = cost.driver_ms + cost.shaderbed_ms;
   cost.wall_ms = report.wall_ms;

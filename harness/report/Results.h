@@ -82,7 +82,8 @@ struct CellResult {
   double silhouette_threshold = 0;
   double lut_bound = 0;             // LUT variants: the derived LUT error bound in the threshold
   std::string lut_derivation;
-  // CPU wall times: compile, build, draw, readback, reference, compare. "compile" is the
+  // CPU wall times: compile, build, draw, readback, reference, compare, and io (writing the
+  // cell's images, with --out only). "compile" is the
   // cell's program's (shared by every cell of that case/variant/language) and "reference"
   // its group's (case/variant/shape): sum them once each (bench/SuiteCost does). "build"
   // is the driver's pipeline/program build + JIT, 0 when the backend reused the pipeline

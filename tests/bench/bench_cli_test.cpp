@@ -42,6 +42,20 @@ void expect_close(double a, double b, const std::string& what) {
   EXPECT_NEAR(a, b, 1e-9 * std::max({1.0, std::abs(a), std::abs(b)})) << what;
 }
 
+TEST(BenchCli, OutMakesImageIoAPart) {
+  const fs::path dir = fs::temp_directory_path() / ("bench_cli_out_" + std::to_string(::getpid()));
+  const fs::path json_path = dir / "bench.json";
+  const CliRun r = shaderbed_bench("--quick --out " + (dir / "images").string() + " --json " + json_path.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(slurp(json_path));
+  const nlohmann::json& io = j["suite"]["parts"]["io"];
+  EXPECT_EQ(io["owner"], "shaderbed");
+  EXPECT_EQ(io["count"], j["suite"]["cells"]);
+  EXPECT_GT(io["ms"].get<double>(), 0);
+  EXPECT_TRUE(fs::exists(dir / "images" / "phong"));
+  fs::remove_all(dir);
+}
+
 TEST(BenchCli, QuickRunWritesJsonWhosePartsAddUp) {
   const fs::path json_path = fs::temp_directory_path() / ("bench_cli_" + std::to_string(::getpid()) + ".json");
   const CliRun r = shaderbed_bench("--quick --json " + json_path.string());

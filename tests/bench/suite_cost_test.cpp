@@ -87,6 +87,16 @@ TEST(SuiteCost, DriverAndShaderbedSharesAddUp) {
   EXPECT_DOUBLE_EQ(cost.driver_share() + cost.shaderbed_share(), 1);
 }
 
+TEST(SuiteCost, ImageIoIsShaderbedsOwnPerCellWhenImagesWereWritten) {
+  EXPECT_EQ(count(suite_cost(with_workers(two_programs_two_groups(), 1)), "io"), 0u);   // no --out
+  RunReport report = two_programs_two_groups();
+  for (CellResult& r : report.results) r.time_ms["io"] = 1.5;
+  const SuiteCost cost = suite_cost(with_workers(report, 1));
+  EXPECT_EQ(count(cost, "io"), 8u);
+  EXPECT_DOUBLE_EQ(part(cost, "io"), 8 * 1.5);
+  EXPECT_DOUBLE_EQ(cost.shaderbed_ms, 12 + 50 + 2 + 12);
+}
+
 TEST(SuiteCost, UnaccountedIsWallTimesWorkersMinusParts) {
   const SuiteCost cost = suite_cost(with_workers(two_programs_two_groups(), 2));
   EXPECT_DOUBLE_EQ(cost.worker_ms, 200);

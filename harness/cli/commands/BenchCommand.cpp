@@ -56,6 +56,9 @@ Command add_bench_command(CLI::App& app) {
   cmd->add_option("--repeat", o.runs, "Timed repeats of each compared render and draw")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000));
+  cmd->add_option("--out", o.out_dir,
+                  "Write the suite's images here, as 'run --out' does, so image I/O is one of the parts "
+                  "(default: none written)");
   cmd->add_option("--cases-dir", o.cases_dir, "Folder of case files")->default_str(default_cases_dir());
   cmd->add_option("--json", args->json, "Write the numbers as JSON");
   cmd->add_flag("--quick", args->quick,

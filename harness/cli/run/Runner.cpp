@@ -278,12 +278,14 @@ class GroupRunner {
     r.artefacts.error_exr = (dir / (stem + ".error.exr")).string();
     r.artefacts.error_png = (dir / (stem + ".error.png")).string();
     r.artefacts.reference_png = (dir / "reference.png").string();
+    const auto io_start = Clock::now();
     for (auto written : {write_exr(r.artefacts.render_exr, scene_.width, scene_.height, image.rgba),
                          write_png(r.artefacts.render_png, image),
                          write_exr(r.artefacts.error_exr, scene_.width, scene_.height, cmp.error.rgba),
                          // Error heat map: the interior tolerance shows as mid grey.
                          write_png(r.artefacts.error_png, cmp.error, float(0.5 / std::max(r.interior_threshold, 1e-12)))})
       if (!written) return written;
+    r.time_ms["io"] = ms_since(io_start);
     return {};
   }
 
