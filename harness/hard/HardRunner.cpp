@@ -14,6 +14,7 @@
 
 #include "backends/Backend.h"
 #include "cli/run/CaseUniforms.h"
+#include "cli/run/CellPlan.h"
 #include "cli/run/ReferenceRender.h"
 #include "cli/run/Runner.h"
 #include "compare/ImageComparison.h"
@@ -35,11 +36,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 const std::vector<std::string> kBookVariants = {"vertex", "pixel"};
 const std::string kRobustVariant = "pixel_robust";
-
-struct BackendSlot {
-  std::string name;
-  Result<std::unique_ptr<Backend>> backend = fail("backend", "not started");
-};
 
 // The double reference of one scenario, and how each pixel is judged.
 struct ScenarioReference {
@@ -331,10 +327,7 @@ Result<HardReport> run_hard_cases(const HardOptions& o) {
   const auto start = Clock::now();
   auto cases = select_cases(o);
   if (!cases) return std::unexpected(cases.error());
-  std::vector<BackendSlot> backends;
-  for (const char* name : {"vulkan", "gl"})
-    if (wanted(o.backends, name))
-      backends.push_back({name, std::string(name) == "vulkan" ? make_vulkan_backend() : make_gl_backend()});
+  std::vector<BackendSlot> backends = start_backends(o.backends);
 
   HardReport report;
   report.size = o.size | 1;

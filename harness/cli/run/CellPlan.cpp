@@ -9,6 +9,14 @@
 #include "scene/Primitives.h"
 
 namespace shaderbed {
+
+std::vector<BackendSlot> start_backends(const std::vector<std::string>& filter) {
+  std::vector<BackendSlot> backends;
+  for (const char* name : {"vulkan", "gl"})
+    if (wanted(filter, name))
+      backends.push_back({name, std::string(name) == "vulkan" ? make_vulkan_backend() : make_gl_backend()});
+  return backends;
+}
 std::vector<CellGroup> plan_cells(const std::vector<Case>& cases, std::vector<BackendSlot>& backends,
                                   const CellFilters& f) {
   std::vector<CellGroup> groups;

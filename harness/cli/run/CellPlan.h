@@ -15,6 +15,10 @@ struct BackendSlot {
   Result<std::unique_ptr<Backend>> backend = fail("backend", "not started");
 };
 
+// A slot per backend the filter selects (empty = vulkan, gl), each started here; a backend
+// that cannot start is an error in its slot, so its cells report it.
+std::vector<BackendSlot> start_backends(const std::vector<std::string>& filter);
+
 struct PlannedCell {
   Language language;
   BackendSlot* backend;

@@ -295,14 +295,6 @@ class GroupRunner {
   double area_ = 0;   // the current group's expected projected area, in pixels
 };
 
-std::vector<BackendSlot> start_backends(const RunOptions& o) {
-  std::vector<BackendSlot> backends;
-  for (const char* name : {"vulkan", "gl"})
-    if (wanted(o.backends, name))
-      backends.push_back({name, std::string(name) == "vulkan" ? make_vulkan_backend() : make_gl_backend()});
-  return backends;
-}
-
 // Consecutive groups of one case x variant: they share programs, so one worker runs
 // them all and builds each pipeline once.
 std::vector<std::vector<const CellGroup*>> bundles_of(const std::vector<CellGroup>& groups) {
@@ -353,7 +345,7 @@ std::vector<CellResult> run_groups(const RunOptions& o, const SceneSetup& scene,
   std::vector<std::jthread> threads;
   for (auto& backends : own)
     threads.emplace_back([&] {
-      backends = start_backends(o);
+      backends = start_backends(o.backends);
       work(backends);
     });
   work(first_backends);
@@ -390,7 +382,7 @@ Result<RunReport> run_suite(const RunOptions& o) {
     shard = *parsed;
   }
 
-  std::vector<BackendSlot> backends = start_backends(o);
+  std::vector<BackendSlot> backends = start_backends(o.backends);
 
   std::vector<CellGroup> groups = plan_cells(*cases, backends, {o.variants, o.languages, o.shapes});
   if (groups.empty()) return fail("options", "the filters select no cells");
