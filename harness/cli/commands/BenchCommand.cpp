@@ -85,7 +85,8 @@ Command add_bench_command(CLI::App& app) {
             auto report = bench::run_bench(a.options);
             if (!report) {
               fmt::print(stderr, "shaderbed: bench: {}\n", report.error().to_string());
-              return kExitBadInput;
+              // A compared cell that could not be drawn is a failure, not bad input.
+              return report.error().stage == "bench" ? kExitFail : kExitBadInput;
             }
             fmt::print("{}", bench::bench_table(*report));
             if (!a.json.empty()) {
