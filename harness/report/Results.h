@@ -51,7 +51,7 @@ struct TimingInterval {
   double median = 0;
   double low = 0;
   double high = 0;
-  double level = 0;         // the interval's actual coverage, e.g. 0.9375 for 5 runs, 0.96 for 9
+  double level = 0;         // the interval's actual coverage, e.g. 0.96875 for 6 runs, 0.961 for 9
 };
 
 // The draw repeated (warm-up, then `runs` timed repeats), each repeat timed twice: by the

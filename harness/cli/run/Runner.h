@@ -28,7 +28,7 @@ struct RunOptions {
   // Worker threads, each with its own Vulkan device and GL context; 0 = one per core.
   // Whole case x variant bundles go to one worker, so each pipeline is built once.
   int jobs = 0;
-  TimingRequest timing{.warmup = 1, .runs = 5};   // GPU timing of every cell's draw
+  TimingRequest timing{.warmup = 1, .runs = 6};   // 6: the fewest whose [min, max] is a 95 % CI of the median
   int mesh_slices = 0;              // > 0: every shape at this density (make_shape), not the case's
   bool relaxed_precision = false;   // compile with floats declared relaxed (compile/RelaxedPrecision.h)
   // Judge every variant against the per-pixel model, so a per-vertex variant's error is what
