@@ -233,24 +233,6 @@ TEST_P(GlLookupTexture, TexelCountMismatchIsAnError) {
 
 // ---- Filtering precision: the driver against exact linear interpolation ----------------
 
-// Quasi-random coordinates in [-0.1, 1.1]^n per pixel; the shader writes the coordinate
-// it used next to the sample, so the reference uses exactly the float the sampler saw.
-std::string measuring_fragment_shader(uint32_t dimensions) {
-  const std::string coordinate =
-      dimensions == 1   ? "float c = fract(dot(p, vec2(0.7548776662, 0.5698402910))) * 1.2 - 0.1;\n"
-                          "colour = vec4(texture(lut, c).r, c, 0.5, 0.5);\n"
-      : dimensions == 2 ? "vec2 c = fract(vec2(dot(p, vec2(0.7548776662, 0.5698402910)), "
-                          "dot(p, vec2(0.5698402910, 0.3248198))) + 0.1 * p.yx) * 1.2 - 0.1;\n"
-                          "colour = vec4(texture(lut, c).r, c, 0.5);\n"
-                        : "vec3 c = fract(vec3(dot(p, vec2(0.8191725134, 0.6710436067)), "
-                          "dot(p, vec2(0.5497004779, 0.8191725134)), dot(p, vec2(0.6710436067, 0.5497004779))) "
-                          "+ 0.1 * p.yxy) * 1.2 - 0.1;\n"
-                          "colour = vec4(texture(lut, c).r, c);\n";
-  return std::string("#version 450\n") + "layout(binding = 0) uniform " + sampler_type(dimensions) + " lut;\n" +
-         "layout(location = 0) out vec4 colour;\n" + "void main() {\n  vec2 p = gl_FragCoord.xy;\n  " + coordinate +
-         "}\n";
-}
-
 TEST_P(GlLookupTexture, FilteringErrorAgainstExactLinearInterpolation) {
   // Texels uniform in [0, 1): an error is also relative to the LUT's range. The sizes
   // are the largest the book's LUT cases use.

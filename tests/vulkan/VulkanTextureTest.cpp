@@ -282,25 +282,6 @@ void main() { colour = texture(lut, tint.xy); }
 
 // ---- Filtering precision: the driver against exact linear interpolation ----------------
 
-// Quasi-random coordinates in [-0.1, 1.1]^n per pixel (R2/R3 sequences of the pixel
-// position); the shader writes the coordinate it used next to the sample, so the
-// reference is computed from exactly the float the sampler saw.
-std::string measuring_fragment_shader(uint32_t dimensions) {
-  const std::string coordinate =
-      dimensions == 1   ? "float c = fract(dot(p, vec2(0.7548776662, 0.5698402910))) * 1.2 - 0.1;\n"
-                          "colour = vec4(texture(lut, c).r, c, 0.5, 0.5);\n"
-      : dimensions == 2 ? "vec2 c = fract(vec2(dot(p, vec2(0.7548776662, 0.5698402910)), "
-                          "dot(p, vec2(0.5698402910, 0.3248198))) + 0.1 * p.yx) * 1.2 - 0.1;\n"
-                          "colour = vec4(texture(lut, c).r, c, 0.5);\n"
-                        : "vec3 c = fract(vec3(dot(p, vec2(0.8191725134, 0.6710436067)), "
-                          "dot(p, vec2(0.5497004779, 0.8191725134)), dot(p, vec2(0.6710436067, 0.5497004779))) "
-                          "+ 0.1 * p.yxy) * 1.2 - 0.1;\n"
-                          "colour = vec4(texture(lut, c).r, c);\n";
-  return std::string("#version 450\n") + "layout(set = 0, binding = 0) uniform " + sampler_type(dimensions) +
-         " lut;\n" + "layout(location = 0) out vec4 colour;\n" + "void main() {\n  vec2 p = gl_FragCoord.xy;\n  " +
-         coordinate + "}\n";
-}
-
 struct FilterError {
   double max_abs = 0;
   double mean_abs = 0;
