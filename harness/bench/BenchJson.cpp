@@ -2,6 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "report/JsonValues.h"
+
 namespace shaderbed::bench {
 namespace {
 
@@ -49,13 +51,7 @@ std::string bench_json(const BenchReport& r) {
   for (const ReferenceVsDrivers& c : r.comparisons) comparisons.push_back(comparison(c));
   const nlohmann::json j = {
       {"schema", kBenchSchemaVersion},
-      {"tools",
-       {{"glslang", r.tools.glslang},
-        {"spirv_tools", r.tools.spirv_tools},
-        {"spirv_cross", r.tools.spirv_cross},
-        {"vulkan_driver", r.tools.vulkan_driver},
-        {"gl_driver", r.tools.gl_driver},
-        {"llvm", r.tools.llvm}}},
+      {"tools", nlohmann::json(json_tools(r.tools))},
       {"size", r.size},
       {"jobs", r.jobs},
       {"cases", r.cases},

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "report/JsonValues.h"
+
 namespace shaderbed::hard {
 namespace {
 
@@ -77,13 +79,13 @@ nlohmann::json json_report(const HardReport& report) {
                          {"message", r.message}, {"pixels", e.pixels}, {"measured_pixels", e.measured_pixels},
                          {"nan", e.render_nan}, {"inf", e.render_inf}, {"nonfinite", e.render_nonfinite},
                          {"reference_nonfinite", e.reference_nonfinite}, {"nonfinite_mismatch", e.nonfinite_mismatch},
-                         {"max_relative", e.max_relative}, {"max_relative_pixel", pixel(e.max_relative_pixel, width)},
+                         {"max_relative", json_number<nlohmann::json>(e.max_relative)}, {"max_relative_pixel", pixel(e.max_relative_pixel, width)},
                          {"max_ulps", e.max_ulps}, {"max_ulps_pixel", pixel(e.max_ulps_pixel, width)}});
   }
   j["models"] = nlohmann::json::array();
   for (const ModelSummary& s : report.summaries) {
     auto side = [](size_t nonfinite, size_t mismatch, double rel, uint64_t ulps, size_t failed) {
-      return nlohmann::json{{"nonfinite", nonfinite}, {"nonfinite_mismatch", mismatch}, {"max_relative", rel},
+      return nlohmann::json{{"nonfinite", nonfinite}, {"nonfinite_mismatch", mismatch}, {"max_relative", json_number<nlohmann::json>(rel)},
                             {"max_ulps", ulps}, {"failed_rows", failed}};
     };
     j["models"].push_back(

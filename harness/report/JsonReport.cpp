@@ -1,5 +1,7 @@
 #include "report/JsonReport.h"
 
+#include "report/JsonValues.h"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -17,12 +19,6 @@ namespace {
 using ojson = nlohmann::ordered_json;
 using json = nlohmann::json;
 
-// JSON has no Inf/NaN: non-finite numbers become strings the reader turns back.
-ojson number(double v) {
-  if (std::isnan(v)) return "nan";
-  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-  return v;
-}
 
 ojson value_counts(const ValueCounts& v) {
   return {{"nan", v.nan}, {"pos_inf", v.pos_inf}, {"neg_inf", v.neg_inf}, {"negative", v.negative}, {"above_one", v.above_one}};
@@ -42,32 +38,32 @@ ojson cell_json(const CellResult& r) {
                 {"message", r.message}};
   cell["attribution"] = {{"verdict", r.attribution}, {"reason", r.attribution_reason}};
   cell["known_failure"] = {{"known", r.known_failure}, {"reason", r.known_reason}};
-  cell["metrics"] = {{"max_abs", number(m.max_abs)},
-                     {"rmse", number(m.rmse)},
-                     {"psnr", number(m.psnr)},
+  cell["metrics"] = {{"max_abs", json_number(m.max_abs)},
+                     {"rmse", json_number(m.rmse)},
+                     {"psnr", json_number(m.psnr)},
                      {"bad_pixels", m.bad_pixels},
                      {"nonfinite", m.nonfinite},
                      {"nonfinite_mismatch", m.nonfinite_mismatch},
                      {"coverage_mismatch", m.coverage_mismatch},
-                     {"silhouette_max_abs", number(m.silhouette_max_abs)},
-                     {"min_passing", {{"interior", number(m.min_passing_interior)}, {"silhouette", number(m.min_passing_silhouette)}}},
+                     {"silhouette_max_abs", json_number(m.silhouette_max_abs)},
+                     {"min_passing", {{"interior", json_number(m.min_passing_interior)}, {"silhouette", json_number(m.min_passing_silhouette)}}},
                      {"coverage",
                       {{"interior_pixels", m.interior_pixels},
                        {"silhouette_pixels", m.silhouette_pixels},
                        {"covered_pixels", m.covered_pixels},
                        {"reference_covered_pixels", m.reference_covered_pixels},
-                       {"expected_area", number(m.expected_area)}}},
+                       {"expected_area", json_number(m.expected_area)}}},
                      {"values", {{"render", value_counts(m.render_values)}, {"reference", value_counts(m.reference_values)}}}};
-  cell["tolerance"] = {{"interior", number(r.interior_threshold)},
-                       {"silhouette", number(r.silhouette_threshold)},
-                       {"lut", {{"bound", number(r.lut_bound)}, {"derivation", r.lut_derivation}}}};
+  cell["tolerance"] = {{"interior", json_number(r.interior_threshold)},
+                       {"silhouette", json_number(r.silhouette_threshold)},
+                       {"lut", {{"bound", json_number(r.lut_bound)}, {"derivation", r.lut_derivation}}}};
   ojson times = ojson::object();
-  for (const auto& [stage, ms] : r.time_ms) times[stage] = number(ms);
+  for (const auto& [stage, ms] : r.time_ms) times[stage] = json_number(ms);
   cell["time_ms"] = std::move(times);
   cell["program_cached"] = r.program_cached;
   const auto interval = [](const TimingInterval& t) {
-    return ojson{{"median", number(t.median)},
-                 {"ci", {{"low", number(t.low)}, {"high", number(t.high)}, {"level", number(t.level)}}}};
+    return ojson{{"median", json_number(t.median)},
+                 {"ci", {{"low", json_number(t.low)}, {"high", json_number(t.high)}, {"level", json_number(t.level)}}}};
   };
   cell["gpu_ms"] = {{"clock", r.gpu.clock},
                     {"warmup", r.gpu.warmup},
@@ -305,14 +301,10 @@ RunReport read_report(const json& j) {
 std::string to_json(const RunReport& report) {
   ojson j;
   j["schema"] = kResultsSchemaVersion;
-  j["tool"] = {{"glslang", report.tools.glslang},
-               {"spirv_tools", report.tools.spirv_tools},
-               {"spirv_cross", report.tools.spirv_cross},
-               {"llvm", report.tools.llvm},
-               {"mesa", {{"vulkan", report.tools.vulkan_driver}, {"gl", report.tools.gl_driver}}}};
+  j["tool"] = json_tools(report.tools);
   j["shard"] = report.shard;
   j["out_dir"] = report.out_dir;
-  j["wall_ms"] = number(report.wall_ms);
+  j["wall_ms"] = json_number(report.wall_ms);
   j["workers"] = report.workers;
   size_t known = 0;
   for (const CellResult& r : report.results) known += r.status == "fail" && r.known_failure;

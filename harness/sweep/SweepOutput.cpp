@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "report/JsonValues.h"
 #include "report/Markup.h"
 
 namespace shaderbed {
@@ -14,12 +15,6 @@ namespace {
 
 using ojson = nlohmann::ordered_json;
 
-// JSON has no Inf/NaN: written as strings, as the results file does.
-ojson number(double v) {
-  if (std::isnan(v)) return "nan";
-  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-  return v;
-}
 
 std::string axis_text(const SweepPoint& p) {
   std::string s;
@@ -71,21 +66,19 @@ std::string sweep_json(const SweepResult& sweep, const std::vector<SceneChart>& 
   for (const SweepAxis& a : sweep.axes) axes.push_back({{"name", a.name}, {"values", a.values}});
   j["axes"] = std::move(axes);
   j["precisions"] = sweep.precisions;
-  const ToolVersions& t = sweep.cells.tools;
-  j["tools"] = {{"glslang", t.glslang}, {"spirv_tools", t.spirv_tools}, {"spirv_cross", t.spirv_cross},
-                {"llvm", t.llvm},       {"mesa", {{"vulkan", t.vulkan_driver}, {"gl", t.gl_driver}}}};
+  j["tools"] = json_tools(sweep.cells.tools);
   ojson points = ojson::array();
   for (const SweepPoint& p : sweep.points) {
     ojson params = ojson::object();
-    for (const auto& [name, value] : p.axis_values) params[name] = number(value);
+    for (const auto& [name, value] : p.axis_values) params[name] = json_number(value);
     for (const char* key : {"variant", "precision", "language", "backend", "path", "shape"}) params[key] = p.cell.at(key);
     points.push_back({{"params", std::move(params)},
-                      {"rmse", number(p.rmse)},
-                      {"max_abs", number(p.max_abs)},
-                      {"time_ms", number(p.time_ms)},
-                      {"time_ci_ms", {number(p.time_low_ms), number(p.time_high_ms)}},
-                      {"driver_clock_ms", number(p.driver_clock_ms)},
-                      {"build_ms", number(p.build_ms)},
+                      {"rmse", json_number(p.rmse)},
+                      {"max_abs", json_number(p.max_abs)},
+                      {"time_ms", json_number(p.time_ms)},
+                      {"time_ci_ms", {json_number(p.time_low_ms), json_number(p.time_high_ms)}},
+                      {"driver_clock_ms", json_number(p.driver_clock_ms)},
+                      {"build_ms", json_number(p.build_ms)},
                       {"instructions", p.instructions},
                       {"instructions_by_stage", {{"vertex", p.vertex_instructions}, {"fragment", p.fragment_instructions}}},
                       {"status", p.status},
