@@ -145,17 +145,18 @@ Result<GlRenderer::LinkedProgram> GlRenderer::link(const DrawJob& job) {
   return LinkedProgram{std::move(*program), std::move(*interface)};
 }
 
+void GlRenderer::clear_and_draw(GLsizei index_count) const {
+  const GLfloat transparent_black[4] = {0, 0, 0, 0};
+  const GLfloat far_depth = 1.0f;
+  gl_.ClearBufferfv(GL_COLOR, 0, transparent_black);
+  gl_.ClearBufferfv(GL_DEPTH, 0, &far_depth);
+  gl_.DrawElements(GL_TRIANGLES, index_count, GL_UNSIGNED_INT, nullptr);
+}
+
 // Each timed draw between GL_TIME_ELAPSED begin/end; llvmpipe reports the time its
 // threads spent on the commands.
 Result<void> GlRenderer::time_draws(const DrawJob& job, GLsizei index_count, RenderTimings& timings) {
-  const GLfloat transparent_black[4] = {0, 0, 0, 0};
-  const GLfloat far_depth = 1.0f;
-  const auto draw = [&] {
-    gl_.ClearBufferfv(GL_COLOR, 0, transparent_black);
-    gl_.ClearBufferfv(GL_DEPTH, 0, &far_depth);
-    gl_.DrawElements(GL_TRIANGLES, index_count, GL_UNSIGNED_INT, nullptr);
-  };
-  for (int i = 0; i < job.timing.warmup; ++i) draw();
+  for (int i = 0; i < job.timing.warmup; ++i) clear_and_draw(index_count);
   gl_.Finish();
   GLuint name = 0;
   gl_.GenQueries(1, &name);
@@ -163,7 +164,7 @@ Result<void> GlRenderer::time_draws(const DrawJob& job, GLsizei index_count, Ren
   for (int i = 0; i < job.timing.runs; ++i) {
     Stopwatch wall;
     gl_.BeginQuery(GL_TIME_ELAPSED, query.get());
-    draw();
+    clear_and_draw(index_count);
     gl_.EndQuery(GL_TIME_ELAPSED);
     gl_.Finish();
     timings.wall_ms.push_back(wall.lap_ms());
@@ -232,11 +233,7 @@ Result<RenderOutput> GlRenderer::render_on_path(const DrawJob& job) {
   }
 
   stopwatch.lap_ms();
-  const GLfloat transparent_black[4] = {0, 0, 0, 0};
-  const GLfloat far_depth = 1.0f;
-  gl_.ClearBufferfv(GL_COLOR, 0, transparent_black);
-  gl_.ClearBufferfv(GL_DEPTH, 0, &far_depth);
-  gl_.DrawElements(GL_TRIANGLES, mesh->index_count, GL_UNSIGNED_INT, nullptr);
+  clear_and_draw(mesh->index_count);
   gl_.Finish();
   output.timings.draw_ms = stopwatch.lap_ms();
   if (auto ok = check_gl(gl_, "drawing " + std::to_string(mesh->index_count / 3) + " triangles"); !ok)

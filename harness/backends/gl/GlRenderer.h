@@ -36,6 +36,7 @@ class GlRenderer final : public Backend {
   Result<RenderOutput> render_on_path(const DrawJob& job);
   Result<const GlRenderTarget*> target_of_size(int width, int height);
   void set_fixed_function_state() const;
+  void clear_and_draw(GLsizei index_count) const;   // clear to (0,0,0,0) and depth 1, draw the mesh
 
   // A linked program (its JIT done by a first draw) and what it asks to be fed, kept for
   // later draws of the same program along the same path.
