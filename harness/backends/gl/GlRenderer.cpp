@@ -128,6 +128,9 @@ void GlRenderer::set_fixed_function_state() const {
 }
 
 Result<GlRenderer::LinkedProgram> GlRenderer::link(const DrawJob& job) {
+  // Checked once per program, here, since a linked program is kept for later draws.
+  if (job.path != ShaderPath::native_glsl)
+    if (auto ok = check_uniform_locations_across_stages(job.program); !ok) return std::unexpected(ok.error());
   auto program = build_gl_program(gl_, job.program, job.path);
   if (!program) return std::unexpected(program.error());
   Result<GlProgramInterface> interface;
@@ -187,9 +190,6 @@ Result<RenderOutput> GlRenderer::render_on_path(const DrawJob& job) {
 
   auto target = target_of_size(job.width, job.height);
   if (!target) return std::unexpected(target.error());
-
-  if (job.path != ShaderPath::native_glsl)
-    if (auto ok = check_uniform_locations_across_stages(job.program); !ok) return std::unexpected(ok.error());
 
   RenderOutput output;
   Stopwatch stopwatch;
