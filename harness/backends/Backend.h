@@ -84,6 +84,7 @@ class Backend {
   virtual ~Backend() = default;
   virtual std::string_view name() const = 0;          // "vulkan", "gl"
   virtual std::string driver_version() const = 0;     // e.g. "Mesa 22.3.6 (LLVM 15.0.6)"
+  virtual std::string device_name() const = 0;        // e.g. "llvmpipe (LLVM 15.0.6, 256 bits) [cpu]"
   // The paths this backend offers for programs of a language.
   virtual std::vector<ShaderPath> paths(Language) const = 0;
   virtual Result<RenderOutput> render(const DrawJob&) = 0;
@@ -96,6 +97,9 @@ std::string program_key(const CompiledProgram& program, ShaderPath path);
 
 // Factories; an error when the driver is not available (e.g. no lavapipe ICD).
 Result<std::unique_ptr<Backend>> make_vulkan_backend();
+// --vulkan-device: the device every later make_vulkan_backend() opens, by index or name
+// (vulkan::VulkanDevice::create); "" = lavapipe. Set before any backend starts.
+void choose_vulkan_device(std::string index_or_name);
 Result<std::unique_ptr<Backend>> make_gl_backend();
 
 }  // namespace shaderbed

@@ -1,22 +1,29 @@
 // shaderbed: compile a lighting shader, render it on real drivers, diff it against a
 // double-precision CPU reference.
+#include <fmt/format.h>
+
 #include "cli/commands/Command.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"shaderbed: a cross-API shader test bench. Compiles HLSL, Cg and GLSL lighting shaders to SPIR-V, "
                "renders them on Vulkan (lavapipe) and OpenGL (OSMesa) and compares every image with a "
                "double-precision CPU reference."};
-  app.require_subcommand(1);
+  app.require_subcommand(0, 1);   // none only with --version
   const shaderbed::Command commands[] = {shaderbed::add_run_command(app), shaderbed::add_eval_command(app),
                                           shaderbed::add_merge_command(app),
                                           shaderbed::add_stats_command(app), shaderbed::add_sweep_command(app),
                                           shaderbed::add_hard_command(app),
-                                          shaderbed::add_bench_command(app)};
+                                          shaderbed::add_bench_command(app), shaderbed::add_devices_command(app)};
+  shaderbed::add_cache_options(app);
+  shaderbed::add_vulkan_device_option(app);
+  shaderbed::add_version_flag(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     app.exit(e);
@@ -24,5 +31,6 @@ int main(int argc, char** argv) {
   }
   for (const shaderbed::Command& c : commands)
     if (c.app->parsed()) return c.run();
-  return 0;
+  fmt::print(stderr, "shaderbed: a command is required (shaderbed --help lists them)\n");
+  return shaderbed::kExitBadInput;
 }

@@ -2,28 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 
-#include <OpenImageIO/imageio.h>
+#include "imageio/ImageIoModule.h"
 
 namespace shaderbed {
-namespace {
-
-Result<void> write_image(const std::string& path, const OIIO::ImageSpec& spec, const void* data) {
-  std::error_code ec;
-  std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
-  auto out = OIIO::ImageOutput::create(path);
-  if (!out) return std::unexpected(Error{.message = "no image writer: " + OIIO::geterror(), .file = path, .stage = "image"});
-  if (!out->open(path, spec) || !out->write_image(spec.format, data) || !out->close())
-    return std::unexpected(Error{.message = out->geterror(), .file = path, .stage = "image"});
-  return {};
-}
-
-}  // namespace
 
 Result<void> write_exr(const std::string& path, int width, int height, const std::vector<float>& rgba) {
-  OIIO::ImageSpec spec(width, height, 4, OIIO::TypeDesc::FLOAT);
-  return write_image(path, spec, rgba.data());
+  return write_image_file(path, width, height, 4, PixelType::float32, rgba.data());
 }
 
 Result<void> write_png(const std::string& path, const Image& image, float scale) {
@@ -40,8 +25,7 @@ Result<void> write_png(const std::string& path, const Image& image, float scale)
       o[c] = static_cast<uint8_t>(std::lround(v * 255.0f));
     }
   }
-  OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
-  return write_image(path, spec, bytes.data());
+  return write_image_file(path, image.width, image.height, 3, PixelType::uint8, bytes.data());
 }
 
 }  // namespace shaderbed

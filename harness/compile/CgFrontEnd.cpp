@@ -26,7 +26,7 @@ constexpr const char* kCgMacros =
 // included file's name and line rather than as a failed #include.
 class CgIncluder : public glslang::TShader::Includer {
  public:
-  explicit CgIncluder(std::vector<CgNote>& notes) : notes_(notes) {}
+  CgIncluder(std::vector<CgNote>& notes, std::vector<SourceFile>& read) : notes_(notes), read_(read) {}
 
   IncludeResult* includeLocal(const char* header, const char* includer, size_t depth) override {
     namespace fs = std::filesystem;
@@ -39,7 +39,8 @@ class CgIncluder : public glslang::TShader::Includer {
     if (!in) return failure("cannot read '" + name + "'");
     std::ostringstream text;
     text << in.rdbuf();
-    auto prepared = prepare_cg_file(text.str(), name);
+    read_.push_back({name, text.str()});
+    auto prepared = prepare_cg_file(read_.back().text, name);
     if (!prepared) {
       if (!error) error = prepared.error();
       return failure(prepared.error().message);
@@ -71,6 +72,7 @@ class CgIncluder : public glslang::TShader::Includer {
   }
 
   std::vector<CgNote>& notes_;
+  std::vector<SourceFile>& read_;
   std::set<std::string> once_;
   std::deque<std::string> texts_;  // stable storage for the returned contents
 };
@@ -137,7 +139,7 @@ Result<CgPrepared> prepare_cg(const ShaderSource& source, Target target) {
   shader.setPreamble(kCgMacros);
   const auto messages = static_cast<EShMessages>(EShMsgReadHlsl | EShMsgHlslDX9Compatible);
 
-  CgIncluder includer(out.notes);
+  CgIncluder includer(out.notes, out.includes);
   std::string preprocessed;
   const bool ok =
       shader.preprocess(GetDefaultResources(), 100, ENoProfile, false, false, messages, &preprocessed, includer);

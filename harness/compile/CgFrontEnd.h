@@ -19,6 +19,7 @@ struct CgPrepared {
   std::string preamble;  // macros and the helpers the text calls
   CgTranslation translation;
   std::vector<CgNote> notes;  // every pass's notes (pragmas, includes, rewrites)
+  std::vector<SourceFile> includes;  // every file #include read, as read (the compile cache checks them)
 };
 
 // Passes 1-3: each file prepared, includes resolved relative to the including file

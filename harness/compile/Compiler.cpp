@@ -3,7 +3,6 @@
 #include <fstream>
 #include <sstream>
 
-#include "compile/CrossGlsl.h"
 #include "compile/GlslangFrontEnd.h"
 #include "compile/SpirvReflection.h"
 #include "compile/SpirvTools.h"
@@ -30,8 +29,9 @@ Result<ShaderSource> load_shader_source(Stage stage, const std::string& path) {
   return ShaderSource{.stage = stage, .path = path, .text = text.str()};
 }
 
-Result<ShaderModule> compile_stage(Language language, const ShaderSource& source, Target target) {
-  auto spirv = glslang_to_spirv(language, source, target);
+Result<ShaderModule> compile_stage(Language language, const ShaderSource& source, Target target,
+                                   std::vector<SourceFile>* read_files) {
+  auto spirv = glslang_to_spirv(language, source, target, read_files);
   if (!spirv) return std::unexpected(spirv.error());
   if (auto ok = validate_spirv(*spirv, target, source.path); !ok) return std::unexpected(ok.error());
   auto reflection = reflect_spirv(*spirv, language, source.stage);
@@ -59,9 +59,9 @@ Result<CompiledProgram> compile_program(const ProgramSource& p) {
     if (!module) return std::unexpected(module.error());
     job.dst = std::move(*module);
   }
-  auto vs = spirv_to_glsl(out.vertex_gl.spirv, Stage::vertex);
+  auto vs = spirv_to_glsl_cached(out.vertex_gl.spirv, Stage::vertex);
   if (!vs) return std::unexpected(std::move(vs.error()).in_file(p.vertex.path));
-  auto fs = spirv_to_glsl(out.fragment_gl.spirv, Stage::fragment);
+  auto fs = spirv_to_glsl_cached(out.fragment_gl.spirv, Stage::fragment);
   if (!fs) return std::unexpected(std::move(fs.error()).in_file(p.fragment.path));
   out.vertex_cross_glsl = std::move(*vs);
   out.fragment_cross_glsl = std::move(*fs);

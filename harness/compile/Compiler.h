@@ -2,6 +2,7 @@
 // Front ends (glslang: GLSL, HLSL in the book's DX9 style) to validated SPIR-V for the
 // Vulkan and OpenGL targets, with reflection, plus SPIRV-Cross GLSL for the GL path.
 #include <string>
+#include <vector>
 
 #include "compile/ShaderModule.h"
 #include "core/Error.h"
@@ -17,6 +18,14 @@ struct ShaderSource {
   std::string entry_point = "main";
 };
 
+// A file a compile read besides its ShaderSource (an #include), with the exact text read.
+// The disk compile cache keeps these and checks them on every hit (CompileCache.h).
+struct SourceFile {
+  std::string path;
+  std::string text;
+  bool operator==(const SourceFile&) const = default;
+};
+
 struct ProgramSource {
   Language language = Language::glsl;
   ShaderSource vertex;
@@ -27,9 +36,13 @@ struct ProgramSource {
 Result<ShaderSource> load_shader_source(Stage stage, const std::string& path);
 
 // One stage to SPIR-V for one target; validated with spirv-val; reflection filled in.
-Result<ShaderModule> compile_stage(Language language, const ShaderSource& source, Target target);
+// Uncached. `read_files`, when given, receives every other file the compile read (the Cg
+// front end's #include files, in the order read).
+Result<ShaderModule> compile_stage(Language language, const ShaderSource& source, Target target,
+                                   std::vector<SourceFile>* read_files = nullptr);
 
-// Both stages, both targets, and the SPIRV-Cross GLSL of the OpenGL-target modules.
+// Both stages, both targets, and the SPIRV-Cross GLSL of the OpenGL-target modules;
+// through the compile caches (StageCache.h), so a warm process does not run a compiler.
 Result<CompiledProgram> compile_program(const ProgramSource& program);
 
 // Human-readable SPIR-V disassembly (for reports and debugging).

@@ -1,5 +1,6 @@
 #include "compile/GlslangFrontEnd.h"
 
+#include <atomic>
 #include <mutex>
 #include <optional>
 #include <regex>
@@ -15,9 +16,14 @@
 namespace shaderbed {
 namespace {
 
+std::atomic<bool> initialised{false};
+
 void initialise_glslang_once() {
   static std::once_flag once;
-  std::call_once(once, [] { glslang::InitializeProcess(); });
+  std::call_once(once, [] {
+    glslang::InitializeProcess();
+    initialised = true;
+  });
 }
 
 EShLanguage to_glslang(Stage stage) { return stage == Stage::vertex ? EShLangVertex : EShLangFragment; }
@@ -54,7 +60,10 @@ Error glslang_log_error(const std::string& log, const std::string& path, const c
   return e;
 }
 
-Result<std::vector<uint32_t>> glslang_to_spirv(Language language, const ShaderSource& source, Target target) {
+bool glslang_initialised() { return initialised; }
+
+Result<std::vector<uint32_t>> glslang_to_spirv(Language language, const ShaderSource& source, Target target,
+                                               std::vector<SourceFile>* read_files) {
   initialise_glslang_once();
   const EShLanguage stage = to_glslang(source.stage);
   const bool hlsl = language != Language::glsl;
@@ -65,6 +74,7 @@ Result<std::vector<uint32_t>> glslang_to_spirv(Language language, const ShaderSo
     auto prepared = prepare_cg(source, target);
     if (!prepared) return std::unexpected(prepared.error());
     cg = std::move(*prepared);
+    if (read_files) read_files->insert(read_files->end(), cg->includes.begin(), cg->includes.end());
   }
   if (language == Language::hlsl)
     if (auto ok = reject_glslang_crashers(source); !ok) return std::unexpected(ok.error());

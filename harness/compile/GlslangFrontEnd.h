@@ -15,6 +15,13 @@ constexpr unsigned kFragmentBindingBase = 8;
 // file is the one the log names (an #include'd file or a #line marker's), else `path`.
 Error glslang_log_error(const std::string& log, const std::string& path, const char* what);
 
-Result<std::vector<uint32_t>> glslang_to_spirv(Language language, const ShaderSource& source, Target target);
+// `read_files`, when given, receives every file the front end read besides `source`
+// (#include files; an includer for HLSL/GLSL would report its files here too).
+Result<std::vector<uint32_t>> glslang_to_spirv(Language language, const ShaderSource& source, Target target,
+                                               std::vector<SourceFile>* read_files = nullptr);
+
+// Whether this process has started glslang (glslang::InitializeProcess, called on the
+// first compile). A process served entirely by the compile cache never does.
+bool glslang_initialised();
 
 }  // namespace shaderbed

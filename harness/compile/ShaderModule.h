@@ -29,6 +29,7 @@ struct UniformMember {
   bool column_registers = true;
   uint32_t array_size = 0;      // 0 = not an array
   uint32_t array_stride = 0;
+  bool operator==(const UniformMember&) const = default;
 };
 
 struct UniformBlock {
@@ -37,6 +38,7 @@ struct UniformBlock {
   uint32_t binding = 0;
   uint32_t size = 0;            // declared size in bytes
   std::vector<UniformMember> members;
+  bool operator==(const UniformBlock&) const = default;
 };
 
 struct StageInput {
@@ -44,6 +46,7 @@ struct StageInput {
   std::string name;             // variable name as in SPIR-V / GLSL
   std::string semantic;         // HLSL semantic (POSITION, NORMAL, TEXCOORD0...), if known
   uint32_t components = 4;
+  bool operator==(const StageInput&) const = default;
 };
 
 struct SamplerBinding {
@@ -51,20 +54,25 @@ struct SamplerBinding {
   uint32_t set = 0;
   uint32_t binding = 0;
   uint32_t dimensions = 2;      // 1, 2 or 3
+  bool operator==(const SamplerBinding&) const = default;
 };
 
 struct Reflection {
   std::vector<UniformBlock> uniform_blocks;
   std::vector<StageInput> inputs;     // vertex stage: the attributes to feed
   std::vector<SamplerBinding> samplers;
+  bool operator==(const Reflection&) const = default;
 };
 
+// A field added here must also be written and read by ModuleCodec.cpp (the disk compile
+// cache); its size checks fail to compile until it is.
 struct ShaderModule {
   Stage stage = Stage::vertex;
   std::string source_file;
   std::string entry_point = "main";
   std::vector<uint32_t> spirv;
   Reflection reflection;
+  bool operator==(const ShaderModule&) const = default;
 };
 
 // One vertex + fragment pair of one language, in every form the backends can consume.

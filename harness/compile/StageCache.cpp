@@ -2,9 +2,24 @@
 
 #include <map>
 #include <mutex>
+#include <optional>
 #include <string>
 
+#include "compile/CompileCache.h"
+#include "compile/CrossGlsl.h"
+#include "core/CacheSettings.h"
+
 namespace shaderbed {
+namespace {
+
+// The disk layer for the current settings, or nullopt when it is off.
+std::optional<CompileCache> disk_cache() {
+  const CacheSettings settings = cache_settings();
+  if (!settings.compile_enabled()) return std::nullopt;
+  return std::optional<CompileCache>(std::in_place, settings.compile_dir());
+}
+
+}  // namespace
 
 Result<ShaderModule> compile_stage_cached(Language language, const ShaderSource& source, Target target) {
   static std::mutex mutex;
@@ -14,13 +29,26 @@ Result<ShaderModule> compile_stage_cached(Language language, const ShaderSource&
                     std::to_string(int(target)) + '|' + source.entry_point + '|' + source.path + '|' + source.text;
   {
     const std::lock_guard lock(mutex);
-    if (auto it = modules.find(key); it != modules.end()) return it->second;
+    if (auto it = modules.find(key); it != modules.end()) {
+      count_compile_memory_hit();
+      return it->second;
+    }
   }
   // Compiled outside the lock so workers compile different stages at the same time; two
   // workers racing on one stage both compile it, and the results are identical.
-  Result<ShaderModule> module = compile_stage(language, source, target);
+  Result<ShaderModule> module = [&] {
+    if (std::optional<CompileCache> disk = disk_cache()) return disk->stage(language, source, target);
+    count_compile_run();
+    return compile_stage(language, source, target);
+  }();
   const std::lock_guard lock(mutex);
   return modules.emplace(std::move(key), std::move(module)).first->second;
+}
+
+Result<std::string> spirv_to_glsl_cached(const std::vector<uint32_t>& spirv, Stage stage) {
+  if (std::optional<CompileCache> disk = disk_cache()) return disk->cross_glsl(spirv, stage);
+  count_compile_run();
+  return spirv_to_glsl(spirv, stage);
 }
 
 }  // namespace shaderbed

@@ -3,6 +3,8 @@
 #include <glslang/Public/ShaderLang.h>
 #include <spirv-tools/libspirv.h>
 
+#include "compile/StageFingerprint.gen.h"
+
 #ifndef SHADERBED_SPIRV_CROSS_VERSION
 #define SHADERBED_SPIRV_CROSS_VERSION "unknown"
 #endif
@@ -16,5 +18,7 @@ CompilerVersions compiler_versions() {
           // SPIRV-Cross has no version API; the build records the package version.
           SHADERBED_SPIRV_CROSS_VERSION};
 }
+
+std::string compile_stage_fingerprint() { return SHADERBED_COMPILE_STAGE_FINGERPRINT; }
 
 }  // namespace shaderbed

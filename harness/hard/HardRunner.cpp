@@ -13,10 +13,11 @@
 #include <fmt/format.h>
 
 #include "backends/Backend.h"
-#include "cli/run/CaseUniforms.h"
-#include "cli/run/CellPlan.h"
-#include "cli/run/ReferenceRender.h"
-#include "cli/run/Runner.h"
+#include "run/CaseUniforms.h"
+#include "run/ProgramCache.h"
+#include "run/CellPlan.h"
+#include "run/ReferenceRender.h"
+#include "run/Runner.h"
 #include "compare/ImageComparison.h"
 #include "compare/ImageFiles.h"
 #include "compile/Compiler.h"
@@ -26,7 +27,6 @@
 #include "reference/Reference.h"
 #include "scene/CaseFile.h"
 #include "scene/CaseSelection.h"
-#include "scene/CaseProgram.h"
 #include "scene/NameFilter.h"
 
 namespace shaderbed::hard {
@@ -216,17 +216,19 @@ class HardRunner {
       if (slice)
         for (const auto& [name, value] : c.params) values.try_emplace(name, std::vector<float>(value.begin(), value.end()));
 
-      for (const auto& [language, files] : v->shaders) {
+      for (const auto& shader : v->shaders) {
+        const Language language = shader.first;
         if (!wanted(o_.languages, to_string(language))) continue;
         for (BackendSlot& b : backends_) {
-          std::vector<ShaderPath> paths = b.backend ? (*b.backend)->paths(language) : std::vector<ShaderPath>{};
-          if (!o_.all_paths && paths.size() > 1) paths.resize(1);
-          if (paths.empty()) paths.push_back(ShaderPath::spirv);   // the row reports why the backend cannot draw
-          for (ShaderPath path : paths) {
+          std::vector<ShaderPath> paths;
+          if (b.backend) paths = (*b.backend)->paths(language);
+          if (paths.empty()) paths = {ShaderPath::spirv};   // the row reports why the backend cannot draw
+          // The first path only, unless --all-paths: one row per backend by default.
+          for (ShaderPath path : std::span(paths).first(o_.all_paths ? paths.size() : 1)) {
             HardRow row{.case_name = c.name, .scenario = s.name, .variant = v->name,
                         .kind = v->name == kRobustVariant ? "robust" : "book", .language = to_string(language),
                         .backend = b.name, .path = to_string(path)};
-            auto ok = render_row(c, *v, language, files, b, path, slice ? &*slice : nullptr, *mesh, values, ref, dir, row);
+            auto ok = render_row(c, *v, language, b, path, slice ? &*slice : nullptr, *mesh, values, ref, dir, row);
             if (!ok) {
               row.status = "error";
               row.message = ok.error().to_string();
@@ -238,12 +240,12 @@ class HardRunner {
     }
   }
 
-  Result<void> render_row(const Case& c, const Variant& v, Language language, const ShaderFiles& files, BackendSlot& b,
+  Result<void> render_row(const Case& c, const Variant& v, Language language, BackendSlot& b,
                           ShaderPath path, const Slice* slice, const Mesh& mesh, const NamedValues& values, const Result<ScenarioReference>* ref,
                           const fs::path& dir, HardRow& row) {
     if (!b.backend) return std::unexpected(Error(b.backend.error()).in_backend(b.name));
     const CompiledProgram* program = nullptr;
-    if (auto p = program_for(c, v, language, files); !p) return std::unexpected(p.error());
+    if (auto p = program_for(c, v, language); !p) return std::unexpected(p.error());
     else program = *p;
     if (!*ref) return std::unexpected(ref->error());
     const ScenarioReference& reference = **ref;
@@ -285,20 +287,16 @@ class HardRunner {
     return {};
   }
 
-  Result<const CompiledProgram*> program_for(const Case& c, const Variant& v, Language language, const ShaderFiles& files) {
-    const std::string key = c.name + "/" + v.name + "/" + to_string(language);
-    auto it = programs_.find(key);
-    if (it == programs_.end()) {
-      auto source = load_case_program(language, files, c.path);
-      it = programs_.emplace(key, source ? compile_program(*source) : std::unexpected(source.error())).first;
-    }
-    if (!it->second) return std::unexpected(it->second.error());
-    return &*it->second;
+  // The run's program cache: the same compiled stages, counts and errors as `run`'s cells.
+  Result<const CompiledProgram*> program_for(const Case& c, const Variant& v, Language language) {
+    const CachedProgram& entry = programs_.get(c, v, language);
+    if (!entry.program) return std::unexpected(entry.program.error());
+    return &*entry.program;
   }
 
   const HardOptions& o_;
   std::vector<BackendSlot>& backends_;
-  std::map<std::string, Result<CompiledProgram>> programs_;
+  ProgramCache programs_{ProgramOptions{}};
 };
 
 void summarise(HardReport& report) {

@@ -120,8 +120,9 @@ Slice make_slice(const SliceSpec& spec, int size) {
   transform[3][2] = 0.5;
   const double* m = glm::value_ptr(transform);
   s.uniforms["transform"] = std::vector<float>(m, m + 16);
-  const double* identity = glm::value_ptr(glm::dmat4(1.0));
-  s.uniforms["world"] = std::vector<float>(identity, identity + 16);
+  const glm::dmat4 identity(1.0);   // a named matrix: value_ptr must not point into a temporary
+  const double* world = glm::value_ptr(identity);
+  s.uniforms["world"] = std::vector<float>(world, world + 16);
   s.uniforms["eye_position"] = floats4(kEyeDistance * v, 1);
   if (spec.layout == NormalLayout::plane) {
     // The spot (and Warn light) shines along -light_vector = -N: the centre pixel is on its axis.

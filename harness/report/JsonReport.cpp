@@ -279,6 +279,7 @@ RunReport read_report(const json& j) {
     read(*t, "spirv_tools", "/tool", report.tools.spirv_tools);
     read(*t, "spirv_cross", "/tool", report.tools.spirv_cross);
     read(*t, "llvm", "/tool", report.tools.llvm);
+    read(*t, "vulkan_device", "/tool", report.tools.vulkan_device);
     if (const json* mesa = object_at(*t, "mesa", "/tool")) {
       read(*mesa, "vulkan", "/tool/mesa", report.tools.vulkan_driver);
       read(*mesa, "gl", "/tool/mesa", report.tools.gl_driver);
@@ -288,6 +289,20 @@ RunReport read_report(const json& j) {
   read(j, "out_dir", "", report.out_dir);
   read(j, "wall_ms", "", report.wall_ms);
   read(j, "workers", "", report.workers);
+  if (const json* c = object_at(j, "cache", "")) {
+    CacheUse& use = report.cache.emplace();
+    if (const json* d = object_at(*c, "driver", "/cache")) {
+      read(*d, "enabled", "/cache/driver", use.driver_cache);
+      read(*d, "dir", "/cache/driver", use.driver_cache_dir);
+    }
+    if (const json* k = object_at(*c, "compile", "/cache")) {
+      read(*k, "enabled", "/cache/compile", use.compile_cache);
+      read(*k, "dir", "/cache/compile", use.compile_cache_dir);
+      read(*k, "hits", "/cache/compile", use.compile_hits);
+      read(*k, "misses", "/cache/compile", use.compile_misses);
+      read(*k, "memory_hits", "/cache/compile", use.compile_memory_hits);
+    }
+  }
   const json* results = member(j, "results");
   if (!results) throw BadField{"/results", "missing"};
   if (!results->is_array()) throw BadField{"/results", "expected an array, found " + std::string(results->type_name())};
@@ -306,6 +321,16 @@ std::string to_json(const RunReport& report) {
   j["out_dir"] = report.out_dir;
   j["wall_ms"] = json_number(report.wall_ms);
   j["workers"] = report.workers;
+  if (report.cache) {   // optional: merged reports have none
+    const CacheUse& c = *report.cache;
+    j["cache"] = {{"driver", {{"enabled", c.driver_cache}, {"dir", c.driver_cache_dir}}},
+                  {"compile",
+                   {{"enabled", c.compile_cache},
+                    {"dir", c.compile_cache_dir},
+                    {"hits", c.compile_hits},
+                    {"misses", c.compile_misses},
+                    {"memory_hits", c.compile_memory_hits}}}};
+  }
   size_t known = 0;
   for (const CellResult& r : report.results) known += r.status == "fail" && r.known_failure;
   j["totals"] = {{"cells", report.results.size()},

@@ -24,7 +24,8 @@ inline nlohmann::ordered_json json_tools(const ToolVersions& t) {
           {"spirv_tools", t.spirv_tools},
           {"spirv_cross", t.spirv_cross},
           {"llvm", t.llvm},
-          {"mesa", {{"vulkan", t.vulkan_driver}, {"gl", t.gl_driver}}}};
+          {"mesa", {{"vulkan", t.vulkan_driver}, {"gl", t.gl_driver}}},
+          {"vulkan_device", t.vulkan_device}};
 }
 
 }  // namespace shaderbed

@@ -3,6 +3,7 @@
 // backend x path x shape, plus the toolchain that produced them. JSON (write and read),
 // JUnit, HTML and the console table are views of this.
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -103,10 +104,24 @@ struct CellResult {
 
 struct ToolVersions {
   std::string glslang, spirv_tools, spirv_cross, vulkan_driver, gl_driver, llvm;
+  std::string vulkan_device;   // the device the Vulkan cells ran on (--vulkan-device), with its type
+};
+
+// The caches a run used, and how the compile cache answered (docs/caches.md). Caches
+// never change a result; this says why a run was quick, or why it was not.
+struct CacheUse {
+  bool driver_cache = false;          // Mesa's disk shader cache on
+  std::string driver_cache_dir;       // the folder Mesa uses ("" when off)
+  bool compile_cache = false;         // shaderbed's disk compile cache on
+  std::string compile_cache_dir;      // "" when off
+  size_t compile_hits = 0;            // compiles answered without running a compiler (memory or disk)
+  size_t compile_misses = 0;          // compiles that ran glslang + SPIRV-Tools, or SPIRV-Cross
+  size_t compile_memory_hits = 0;     // of the hits, from this process's own memory
 };
 
 struct RunReport {
   ToolVersions tools;
+  std::optional<CacheUse> cache;    // absent in merged reports and in files from before it existed
   std::vector<CellResult> results;
   double wall_ms = 0;
   int workers = 1;                  // worker threads that ran the cells (run --jobs)

@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "cli/run/Runner.h"
+#include "run/Runner.h"
 #include "plot/ParetoFront.h"
 #include "scene/CaseSelection.h"
 #include "scene/NameFilter.h"

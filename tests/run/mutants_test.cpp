@@ -23,7 +23,7 @@
 #include <gtest/gtest.h>
 #include <toml++/toml.h>
 
-#include "cli/run/Runner.h"
+#include "run/Runner.h"
 #include "scene/CaseFile.h"
 #include "scene/Primitives.h"
 

@@ -1,7 +1,7 @@
 // --param parsing and application to the selected cases.
 #include <gtest/gtest.h>
 
-#include "cli/run/ParameterOverrides.h"
+#include "run/ParameterOverrides.h"
 
 namespace shaderbed {
 namespace {

@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "cli/run/CellPlan.h"
-#include "cli/run/Expectations.h"
+#include "run/CellPlan.h"
+#include "run/Expectations.h"
 
 namespace shaderbed {
 namespace {

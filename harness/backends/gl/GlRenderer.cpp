@@ -81,7 +81,8 @@ Result<std::unique_ptr<GlRenderer>> GlRenderer::create() {
   if (major * 10 + minor < 45)
     return std::unexpected(gl_error("OSMesa gave a " + std::to_string(major) + "." + std::to_string(minor) +
                                     " context; the GL backend needs 4.5 core"));
-  renderer->driver_version_ = gl_string(gl, GL_RENDERER) + ", OpenGL " + gl_string(gl, GL_VERSION);
+  renderer->device_name_ = gl_string(gl, GL_RENDERER);
+  renderer->driver_version_ = renderer->device_name_ + ", OpenGL " + gl_string(gl, GL_VERSION);
   renderer->has_gl_spirv_ = has_extension(gl, "GL_ARB_gl_spirv");
   if (auto ok = check_gl(gl, "querying the context"); !ok) return std::unexpected(ok.error());
   return renderer;

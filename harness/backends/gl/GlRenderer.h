@@ -28,6 +28,7 @@ class GlRenderer final : public Backend {
 
   std::string_view name() const override { return "gl"; }
   std::string driver_version() const override { return driver_version_; }
+  std::string device_name() const override { return device_name_; }
   std::vector<ShaderPath> paths(Language language) const override;
   Result<RenderOutput> render(const DrawJob& job) override;
 
@@ -50,6 +51,7 @@ class GlRenderer final : public Backend {
   OsMesaContext context_;
   GlFunctions gl_;
   std::string driver_version_;
+  std::string device_name_;   // GL_RENDERER
   bool has_gl_spirv_ = false;
   std::optional<GlRenderTarget> target_;  // kept across renders of the same size
   static constexpr size_t max_cached_programs = 512;

@@ -1,5 +1,7 @@
 #include "backends/vulkan/VulkanDevice.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <string>
 #include <vector>
@@ -18,7 +20,6 @@ namespace {
 void pin_lavapipe_icd() {
   if (std::getenv("VK_ICD_FILENAMES") == nullptr && std::getenv("VK_DRIVER_FILES") == nullptr)
     ::setenv("VK_ICD_FILENAMES", lavapipe_icd_manifest, /*overwrite=*/0);
-  isolate_mesa_shader_cache();
 }
 
 const char* device_type_name(VkPhysicalDeviceType type) {
@@ -37,12 +38,8 @@ std::string driver_files_in_use() {
   return "the system's ICDs";
 }
 
-}  // namespace
-
-Result<std::unique_ptr<VulkanDevice>> VulkanDevice::create() {
-  pin_lavapipe_icd();
-  std::unique_ptr<VulkanDevice> self(new VulkanDevice());
-
+// An instance that only enumerates (list_vulkan_devices) or drives one device.
+Result<VkInstance> create_instance() {
   // 1.2: negative viewport heights (1.1) and VkPhysicalDeviceDriverProperties (1.2) are core.
   const VkApplicationInfo app{.sType = VK_STRUCTURE_TYPE_APPLICATION_INFO,
                               .pApplicationName = "shaderbed",
@@ -51,12 +48,16 @@ Result<std::unique_ptr<VulkanDevice>> VulkanDevice::create() {
                               .engineVersion = 1,
                               .apiVersion = VK_API_VERSION_1_2};
   const VkInstanceCreateInfo instance_info{.sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO, .pApplicationInfo = &app};
-  if (VkResult r = vkCreateInstance(&instance_info, nullptr, &self->instance_); r != VK_SUCCESS) {
+  VkInstance instance = VK_NULL_HANDLE;
+  if (VkResult r = vkCreateInstance(&instance_info, nullptr, &instance); r != VK_SUCCESS) {
     Error e = vulkan_error("vkCreateInstance", r);
     e.message += " (drivers from " + driver_files_in_use() + "; is mesa-vulkan-drivers installed?)";
     return std::unexpected(std::move(e));
   }
+  return instance;
+}
 
+Result<std::vector<VkPhysicalDevice>> physical_devices(VkInstance instance) {
   // With a driver whose hardware is absent, enumeration itself fails.
   auto enumeration_error = [](VkResult r) {
     Error e = vulkan_error("vkEnumeratePhysicalDevices", r);
@@ -64,32 +65,124 @@ Result<std::unique_ptr<VulkanDevice>> VulkanDevice::create() {
     return std::unexpected(std::move(e));
   };
   uint32_t count = 0;
-  if (VkResult r = vkEnumeratePhysicalDevices(self->instance_, &count, nullptr); r != VK_SUCCESS)
-    return enumeration_error(r);
+  if (VkResult r = vkEnumeratePhysicalDevices(instance, &count, nullptr); r != VK_SUCCESS) return enumeration_error(r);
   std::vector<VkPhysicalDevice> devices(count);
-  if (VkResult r = vkEnumeratePhysicalDevices(self->instance_, &count, devices.data()); r < 0)
-    return enumeration_error(r);
+  if (VkResult r = vkEnumeratePhysicalDevices(instance, &count, devices.data()); r < 0) return enumeration_error(r);
   devices.resize(count);
+  return devices;
+}
 
-  std::string seen;
-  for (VkPhysicalDevice candidate : devices) {
-    VkPhysicalDeviceProperties props;
-    vkGetPhysicalDeviceProperties(candidate, &props);
-    seen += std::string(seen.empty() ? "" : ", ") + props.deviceName + " (" + device_type_name(props.deviceType) + ")";
-    if (props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU && props.apiVersion >= VK_API_VERSION_1_2) {
-      self->physical_device_ = candidate;
-      self->properties_ = props;
-      break;
-    }
-  }
-  if (self->physical_device_ == VK_NULL_HANDLE)
-    return std::unexpected(backend_error("no Vulkan 1.2 CPU device (lavapipe) among [" + seen + "] with drivers from " +
-                                         driver_files_in_use()));
-
+std::string driver_of(VkPhysicalDevice device) {
   VkPhysicalDeviceDriverProperties driver{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
   VkPhysicalDeviceProperties2 props2{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, .pNext = &driver};
-  vkGetPhysicalDeviceProperties2(self->physical_device_, &props2);
-  self->driver_version_ = std::string(driver.driverName) + " / " + driver.driverInfo;
+  vkGetPhysicalDeviceProperties2(device, &props2);
+  return std::string(driver.driverName) + " / " + driver.driverInfo;
+}
+
+std::string lower(std::string s) {
+  for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// The device --vulkan-device names among `names` (in enumeration order): an index, or a
+// unique case-insensitive part of a name.
+Result<uint32_t> match_device(const std::vector<std::string>& names, const std::string& choice) {
+  std::string seen;
+  std::vector<uint32_t> matches;
+  const bool is_index = !choice.empty() && std::all_of(choice.begin(), choice.end(), ::isdigit);
+  for (uint32_t i = 0; i < names.size(); ++i) {
+    seen += std::string(seen.empty() ? "" : ", ") + std::to_string(i) + ": " + names[i];
+    if (is_index ? std::to_string(i) == choice : lower(names[i]).find(lower(choice)) != std::string::npos)
+      matches.push_back(i);
+  }
+  if (matches.size() == 1) return matches.front();
+  return std::unexpected(backend_error("--vulkan-device " + choice + (matches.empty() ? " matches none" : " matches several") +
+                                       " of the Vulkan devices [" + seen + "] ('shaderbed devices' lists them)"));
+}
+
+std::string device_name_of(VkPhysicalDevice device) {
+  VkPhysicalDeviceProperties props;
+  vkGetPhysicalDeviceProperties(device, &props);
+  return props.deviceName;
+}
+
+}  // namespace
+
+Result<std::vector<VulkanDeviceInfo>> list_vulkan_devices() {
+  isolate_mesa_shader_cache();   // the drivers load here too: the same cache as every other run
+  auto instance = create_instance();
+  if (!instance) return std::unexpected(instance.error());
+  auto devices = physical_devices(*instance);
+  std::vector<VulkanDeviceInfo> out;
+  if (devices)
+    for (uint32_t i = 0; i < devices->size(); ++i) {
+      VkPhysicalDeviceProperties props;
+      vkGetPhysicalDeviceProperties((*devices)[i], &props);
+      out.push_back({i, props.deviceName, device_type_name(props.deviceType), driver_of((*devices)[i]),
+                     std::to_string(VK_API_VERSION_MAJOR(props.apiVersion)) + "." +
+                         std::to_string(VK_API_VERSION_MINOR(props.apiVersion)) + "." +
+                         std::to_string(VK_API_VERSION_PATCH(props.apiVersion))});
+    }
+  vkDestroyInstance(*instance, nullptr);
+  if (!devices) return std::unexpected(devices.error());
+  return out;
+}
+
+Result<VulkanDeviceInfo> find_vulkan_device(const std::string& choice) {
+  auto devices = list_vulkan_devices();
+  if (!devices) return std::unexpected(devices.error());
+  std::vector<std::string> names;
+  for (const VulkanDeviceInfo& d : *devices) names.push_back(d.name);
+  auto index = match_device(names, choice);
+  if (!index) return std::unexpected(index.error());
+  return (*devices)[*index];
+}
+
+std::string VulkanDevice::device_name() const {
+  return std::string(properties_.deviceName) + " [" + device_type_name(properties_.deviceType) + "]";
+}
+
+Result<std::unique_ptr<VulkanDevice>> VulkanDevice::create(const std::string& choice) {
+  // A chosen device may be any driver's; without a choice, lavapipe for comparable bits.
+  if (choice.empty()) pin_lavapipe_icd();
+  isolate_mesa_shader_cache();
+  std::unique_ptr<VulkanDevice> self(new VulkanDevice());
+  auto instance = create_instance();
+  if (!instance) return std::unexpected(instance.error());
+  self->instance_ = *instance;
+  auto devices = physical_devices(self->instance_);
+  if (!devices) return std::unexpected(devices.error());
+
+  if (!choice.empty()) {
+    std::vector<std::string> names;
+    for (VkPhysicalDevice d : *devices) names.push_back(device_name_of(d));
+    auto index = match_device(names, choice);
+    if (!index) return std::unexpected(index.error());
+    self->physical_device_ = (*devices)[*index];
+    vkGetPhysicalDeviceProperties(self->physical_device_, &self->properties_);
+    if (self->properties_.apiVersion < VK_API_VERSION_1_2)
+      return std::unexpected(backend_error(std::string(self->properties_.deviceName) + " supports only Vulkan " +
+                                           std::to_string(VK_API_VERSION_MAJOR(self->properties_.apiVersion)) + "." +
+                                           std::to_string(VK_API_VERSION_MINOR(self->properties_.apiVersion)) +
+                                           "; shaderbed needs 1.2"));
+  } else {
+    std::string seen;
+    for (VkPhysicalDevice candidate : *devices) {
+      VkPhysicalDeviceProperties props;
+      vkGetPhysicalDeviceProperties(candidate, &props);
+      seen += std::string(seen.empty() ? "" : ", ") + props.deviceName + " (" + device_type_name(props.deviceType) + ")";
+      if (props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU && props.apiVersion >= VK_API_VERSION_1_2) {
+        self->physical_device_ = candidate;
+        self->properties_ = props;
+        break;
+      }
+    }
+    if (self->physical_device_ == VK_NULL_HANDLE)
+      return std::unexpected(backend_error("no Vulkan 1.2 CPU device (lavapipe) among [" + seen + "] with drivers from " +
+                                           driver_files_in_use()));
+  }
+
+  self->driver_version_ = driver_of(self->physical_device_);
   vkGetPhysicalDeviceMemoryProperties(self->physical_device_, &self->memory_properties_);
 
   uint32_t family_count = 0;

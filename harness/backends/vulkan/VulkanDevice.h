@@ -19,11 +19,30 @@ namespace shaderbed::vulkan {
 // lavapipe's ICD manifest as Debian's mesa-vulkan-drivers installs it.
 inline constexpr const char* lavapipe_icd_manifest = "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json";
 
+// One physical device as `shaderbed devices` lists it; `index` is what --vulkan-device takes.
+struct VulkanDeviceInfo {
+  uint32_t index = 0;
+  std::string name;          // "llvmpipe (LLVM 15.0.6, 256 bits)"
+  std::string type;          // "cpu", "discrete gpu", ...
+  std::string driver;        // "llvmpipe / Mesa 22.3.6 (LLVM 15.0.6)"
+  std::string api_version;   // "1.3.230"
+};
+
+// Every device of every installed ICD (the lavapipe pin is not applied), in the loader's
+// order; an error when there is no Vulkan loader or driver at all.
+Result<std::vector<VulkanDeviceInfo>> list_vulkan_devices();
+
+// The device a --vulkan-device choice names (see VulkanDevice::create); an error listing
+// the devices there are when it names none or several.
+Result<VulkanDeviceInfo> find_vulkan_device(const std::string& choice);
+
 class VulkanDevice {
  public:
-  // Pins the lavapipe ICD (unless the user chose drivers), creates the instance, picks
-  // the CPU device and creates a device with one graphics queue.
-  static Result<std::unique_ptr<VulkanDevice>> create();
+  // With `choice` empty: pins the lavapipe ICD (unless the user chose drivers) and picks
+  // its CPU device. Otherwise the device of any installed ICD whose index (as
+  // list_vulkan_devices numbers them) or name (case-insensitive substring) is `choice`.
+  // Creates the instance and a device with one graphics queue.
+  static Result<std::unique_ptr<VulkanDevice>> create(const std::string& choice = "");
   ~VulkanDevice();
   VulkanDevice(const VulkanDevice&) = delete;
   VulkanDevice& operator=(const VulkanDevice&) = delete;
@@ -33,6 +52,8 @@ class VulkanDevice {
   const VkPhysicalDeviceProperties& properties() const { return properties_; }
   // "llvmpipe / Mesa 22.3.6 (LLVM 15.0.6)"
   const std::string& driver_version() const { return driver_version_; }
+  // "llvmpipe (LLVM 15.0.6, 256 bits) [cpu]"
+  std::string device_name() const;
 
   // First memory type allowed by type_bits that has all of `required`.
   Result<uint32_t> memory_type(uint32_t type_bits, VkMemoryPropertyFlags required) const;

@@ -15,8 +15,17 @@
 
 namespace shaderbed {
 
+namespace {
+std::string& vulkan_device_choice() {
+  static std::string choice;
+  return choice;
+}
+}  // namespace
+
+void choose_vulkan_device(std::string index_or_name) { vulkan_device_choice() = std::move(index_or_name); }
+
 Result<std::unique_ptr<Backend>> make_vulkan_backend() {
-  auto renderer = vulkan::VulkanRenderer::create();
+  auto renderer = vulkan::VulkanRenderer::create(vulkan_device_choice());
   if (!renderer) return std::unexpected(renderer.error());
   return std::unique_ptr<Backend>(std::move(*renderer));
 }
@@ -114,8 +123,8 @@ Result<void> check_mesh(const Mesh& mesh) {
 
 }  // namespace
 
-Result<std::unique_ptr<VulkanRenderer>> VulkanRenderer::create() {
-  auto device = VulkanDevice::create();
+Result<std::unique_ptr<VulkanRenderer>> VulkanRenderer::create(const std::string& device_choice) {
+  auto device = VulkanDevice::create(device_choice);
   if (!device) return std::unexpected(device.error());
   if (auto ok = check_target_formats(**device); !ok) return std::unexpected(ok.error());
   auto render_pass = create_render_pass(**device);

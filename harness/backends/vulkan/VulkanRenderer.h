@@ -21,11 +21,12 @@ namespace shaderbed::vulkan {
 
 class VulkanRenderer final : public Backend {
  public:
-  static Result<std::unique_ptr<VulkanRenderer>> create();
+  static Result<std::unique_ptr<VulkanRenderer>> create(const std::string& device_choice = "");
   ~VulkanRenderer() override;
 
   std::string_view name() const override { return "vulkan"; }
   std::string driver_version() const override { return device_->driver_version(); }
+  std::string device_name() const override { return device_->device_name(); }
   std::vector<ShaderPath> paths(Language) const override { return {ShaderPath::spirv}; }
   // Not reentrant: one draw at a time per renderer.
   Result<RenderOutput> render(const DrawJob& job) override;

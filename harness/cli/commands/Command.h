@@ -23,5 +23,15 @@ Command add_stats_command(CLI::App& app);
 Command add_sweep_command(CLI::App& app);
 Command add_hard_command(CLI::App& app);
 Command add_bench_command(CLI::App& app);
+Command add_devices_command(CLI::App& app);
+
+// --cache-dir, --no-driver-cache, --no-compile-cache on the root app, accepted after any
+// subcommand too (CacheOptions.cpp). Call after adding the subcommands and before any
+// other root option, so the settings apply before anything loads a driver.
+void add_cache_options(CLI::App& app);
+// --vulkan-device on the root app, also accepted after a subcommand (DevicesCommand.cpp).
+void add_vulkan_device_option(CLI::App& app);
+// --version: shaderbed's version and the toolchain fingerprint, drivers started to read it.
+void add_version_flag(CLI::App& app);
 
 }  // namespace shaderbed

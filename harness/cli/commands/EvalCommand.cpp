@@ -5,7 +5,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands/Command.h"
-#include "cli/run/ParameterOverrides.h"
+#include "run/ParameterOverrides.h"
 #include "reference/Reference.h"
 
 namespace shaderbed {

@@ -9,7 +9,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands/Command.h"
-#include "cli/run/Runner.h"
+#include "run/Runner.h"
 #include "report/HtmlReport.h"
 #include "sweep/Sweep.h"
 #include "sweep/SweepOutput.h"

@@ -1,4 +1,4 @@
-#include "cli/run/Expectations.h"
+#include "run/Expectations.h"
 
 #include <toml++/toml.h>
 

@@ -1,4 +1,4 @@
-#include "cli/run/CellPlan.h"
+#include "run/CellPlan.h"
 
 #include <algorithm>
 #include <charconv>

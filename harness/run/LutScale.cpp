@@ -1,4 +1,4 @@
-#include "cli/run/LutScale.h"
+#include "run/LutScale.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "cli/run/ProgramArtefacts.h"
+#include "run/ProgramArtefacts.h"
 
 #include <filesystem>
 #include <fstream>

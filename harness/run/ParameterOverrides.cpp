@@ -1,4 +1,4 @@
-#include "cli/run/ParameterOverrides.h"
+#include "run/ParameterOverrides.h"
 
 #include <algorithm>
 #include <charconv>

@@ -1,4 +1,4 @@
-#include "cli/run/CaseTextures.h"
+#include "run/CaseTextures.h"
 
 namespace shaderbed {
 

@@ -1,4 +1,4 @@
-#include "cli/run/Runner.h"
+#include "run/Runner.h"
 
 #include <algorithm>
 #include <chrono>
@@ -7,36 +7,36 @@
 #include <map>
 #include <memory>
 #include <mutex>
-#include <regex>
 #include <thread>
 #include <tuple>
 
 #include <fmt/format.h>
 
 #include "backends/Backend.h"
-#include "cli/run/CaseTextures.h"
-#include "cli/run/CaseUniforms.h"
-#include "cli/run/CellPlan.h"
-#include "cli/run/Expectations.h"
-#include "cli/run/LutScale.h"
-#include "cli/run/ParameterOverrides.h"
-#include "cli/run/ProgramArtefacts.h"
-#include "cli/run/ReferenceRender.h"
+#include "run/CaseTextures.h"
+#include "run/CaseUniforms.h"
+#include "run/CellPlan.h"
+#include "run/Expectations.h"
+#include "run/LutScale.h"
+#include "run/ParameterOverrides.h"
+#include "run/ProgramArtefacts.h"
+#include "run/ProgramCache.h"
+#include "run/ReferenceRender.h"
+#include "run/Toolchain.h"
 #include "compare/Attribution.h"
 #include "compare/ImageComparison.h"
 #include "compare/ImageFiles.h"
+#include "backends/MesaEnvironment.h"
+#include "compile/CompileCache.h"
 #include "compile/Compiler.h"
-#include "compile/RelaxedPrecision.h"
-#include "compile/ToolVersions.h"
+#include "core/CacheSettings.h"
 #include "lut/LookupTexture.h"
 #include "lut/LutTolerance.h"
 #include "scene/CaseFile.h"
-#include "scene/CaseProgram.h"
 #include "scene/CaseSelection.h"
 #include "scene/NameFilter.h"
 #include "scene/Primitives.h"
 #include "scene/ProjectedArea.h"
-#include "stats/SpirvCounts.h"
 #include "timing/MedianInterval.h"
 
 namespace shaderbed {
@@ -65,21 +65,6 @@ Result<std::vector<Case>> select_cases(const RunOptions& o) {
   return cases;
 }
 
-std::string llvm_version(const std::string& driver) {
-  static const std::regex llvm(R"(LLVM ([0-9.]+))");
-  std::smatch m;
-  return std::regex_search(driver, m, llvm) ? m[1].str() : "";
-}
-
-Result<ProgramSource> relaxed(ProgramSource source) {
-  for (ShaderSource* stage : {&source.vertex, &source.fragment}) {
-    auto relaxed = relax_precision(source.language, std::move(*stage));
-    if (!relaxed) return std::unexpected(relaxed.error());
-    *stage = std::move(*relaxed);
-  }
-  return source;
-}
-
 GpuTiming gpu_timing(const RenderTimings& t, const TimingRequest& request) {
   const auto interval = [](const std::vector<double>& ms) {
     const MedianInterval m = median_interval(ms);
@@ -90,13 +75,8 @@ GpuTiming gpu_timing(const RenderTimings& t, const TimingRequest& request) {
 
 // Everything computed once and shared by the cells that need it.
 struct Caches {
-  struct Program {
-    Result<CompiledProgram> program = fail("compile", "not compiled");
-    double ms = 0;
-    CellArtefacts sources;   // disassembly and cross GLSL paths
-    std::pair<int, int> instructions{0, 0};   // vertex, fragment
-  };
-  std::map<std::string, Program> programs;                   // case/variant/language
+  explicit Caches(const RunOptions& o) : programs({o.relaxed_precision, o.out_dir}) {}
+  ProgramCache programs;
   std::map<std::string, Mesh> meshes;                        // shape/tessellation
   std::map<std::string, double> areas;                       // shape/tessellation: projected pixels
   std::map<std::string, Result<Texture>> luts;               // case/variant
@@ -209,32 +189,11 @@ class GroupRunner {
     return &*texture;
   }
 
-  Caches::Program& program_for(const CellGroup& g, Language language) {
-    const std::string key = g.c->name + "/" + g.variant->name + "/" + to_string(language);
-    auto it = caches_.programs.find(key);
-    if (it != caches_.programs.end()) return it->second;
-    Caches::Program entry;
-    const auto t0 = Clock::now();
-    auto source = load_case_program(language, g.variant->shaders.at(language), g.c->path);
-    if (source && o_.relaxed_precision) source = relaxed(std::move(*source));
-    entry.program = source ? compile_program(*source) : std::unexpected(source.error());
-    if (entry.program) {
-      auto vertex = stats::count_spirv(entry.program->vertex.spirv);
-      auto fragment = stats::count_spirv(entry.program->fragment.spirv);
-      if (vertex && fragment) entry.instructions = {vertex->total, fragment->total};
-    }
-    entry.ms = ms_since(t0);
-    if (entry.program && !o_.out_dir.empty())
-      (void)write_program_artefacts((fs::path(o_.out_dir) / g.c->name / g.variant->name).string(), *entry.program,
-                                    entry.sources);
-    return caches_.programs.emplace(key, std::move(entry)).first->second;
-  }
-
   Result<void> run_cell(const CellGroup& g, const PlannedCell& cell, const Mesh& mesh,
                         const Result<ReferenceImage>& reference, const Result<const Texture*>& lut, const fs::path& dir,
                         CellResult& r, Image& image) {
     const Case& c = *g.c;
-    Caches::Program& compiled = program_for(g, cell.language);
+    const CachedProgram& compiled = caches_.programs.get(c, *g.variant, cell.language);
     if (!compiled.program) return std::unexpected(compiled.program.error());
     r.time_ms["compile"] = compiled.ms;
     r.artefacts = compiled.sources;
@@ -320,7 +279,7 @@ std::vector<CellResult> run_groups(const RunOptions& o, const SceneSetup& scene,
   size_t next = 0;
   std::vector<CellResult> results;
   const auto work = [&](std::vector<BackendSlot>& backends) {
-    Caches caches;
+    Caches caches(o);
     GroupRunner runner(o, scene, caches);
     for (;;) {
       size_t b;
@@ -367,6 +326,7 @@ void sort_results(RunReport& report) {
 
 Result<RunReport> run_suite(const RunOptions& o) {
   const auto start = Clock::now();
+  const CompileCacheCounts compiles_before = compile_cache_counts();
   auto cases = select_cases(o);
   if (!cases) return std::unexpected(cases.error());
   std::vector<KnownFailure> known;
@@ -393,13 +353,8 @@ Result<RunReport> run_suite(const RunOptions& o) {
   RunReport report;
   report.out_dir = o.out_dir;
   report.shard = o.shard;
-  const CompilerVersions versions = compiler_versions();
-  report.tools = {versions.glslang, versions.spirv_tools, versions.spirv_cross, "", "", ""};
-  for (const BackendSlot& b : backends) {
-    const std::string v = b.backend ? (*b.backend)->driver_version() : "unavailable: " + b.backend.error().message;
-    (b.name == "vulkan" ? report.tools.vulkan_driver : report.tools.gl_driver) = v;
-    if (report.tools.llvm.empty()) report.tools.llvm = llvm_version(v);
-  }
+  report.tools = toolchain(backends);
+
 
   SceneSetup scene;
   scene.width = scene.height = o.size;
@@ -407,6 +362,12 @@ Result<RunReport> run_suite(const RunOptions& o) {
   report.results = std::move(results);
   apply_expectations(known, report);
   sort_results(report);
+  const CacheSettings caches = cache_settings();
+  const MesaShaderCacheState mesa_cache = mesa_shader_cache_state();
+  const CompileCacheCounts compiles = compile_cache_counts() - compiles_before;
+  report.cache = CacheUse{mesa_cache.enabled, mesa_cache.dir, caches.compile_enabled(),
+                          caches.compile_enabled() ? caches.compile_dir() : "", compiles.hits(), compiles.misses(),
+                          compiles.memory_hits};
   report.wall_ms = ms_since(start);
   return report;
 }

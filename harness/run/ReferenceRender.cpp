@@ -1,4 +1,4 @@
-#include "cli/run/ReferenceRender.h"
+#include "run/ReferenceRender.h"
 
 #include "reference/Reference.h"
 

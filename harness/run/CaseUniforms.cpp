@@ -1,4 +1,4 @@
-#include "cli/run/CaseUniforms.h"
+#include "run/CaseUniforms.h"
 
 namespace shaderbed {
 

@@ -1,0 +1,90 @@
+#include "imageio/ImageIoModule.h"
+
+#include <dlfcn.h>
+#include <unistd.h>
+
+#include <array>
+#include <filesystem>
+#include <mutex>
+
+#include "imageio/ModuleAbi.h"
+
+namespace shaderbed {
+namespace fs = std::filesystem;
+namespace {
+
+constexpr const char* kModuleName = "libshaderbed_imageio.so";
+
+struct LoadedModule {
+  const ShaderbedImageIo* table = nullptr;
+  std::string error;
+};
+
+// Next to the running binary first (an installed or copied tree), else where the build put it.
+std::vector<fs::path> module_candidates() {
+  std::vector<fs::path> candidates;
+  std::error_code ec;
+  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) candidates.push_back(self.parent_path() / kModuleName);
+  candidates.push_back(SHADERBED_IMAGEIO_MODULE);
+  return candidates;
+}
+
+const LoadedModule& image_module() {
+  static LoadedModule loaded;
+  static std::once_flag once;
+  std::call_once(once, [] {
+    std::string tried;
+    for (const fs::path& candidate : module_candidates()) {
+      void* handle = ::dlopen(candidate.c_str(), RTLD_NOW | RTLD_LOCAL);
+      if (!handle) {
+        tried += std::string(tried.empty() ? "" : "; ") + ::dlerror();
+        continue;
+      }
+      // Never dlclosed: OpenImageIO keeps threads and plugins of its own.
+      using Entry = const ShaderbedImageIo* (*)();
+      if (auto entry = reinterpret_cast<Entry>(::dlsym(handle, "shaderbed_image_io_v1"))) {
+        loaded.table = entry();
+        return;
+      }
+      tried += std::string(tried.empty() ? "" : "; ") + candidate.string() + " has no shaderbed_image_io_v1";
+    }
+    loaded.error = "cannot load the image I/O module " + std::string(kModuleName) + ": " + tried;
+  });
+  return loaded;
+}
+
+Error image_error(const std::string& message, const std::string& path) {
+  return Error{.message = message, .file = path, .stage = "image"};
+}
+
+}  // namespace
+
+Result<void> write_image_file(const std::string& path, int width, int height, int channels, PixelType type,
+                              const void* pixels) {
+  const LoadedModule& module = image_module();
+  if (!module.table) return std::unexpected(image_error(module.error, path));
+  std::error_code ec;
+  fs::create_directories(fs::path(path).parent_path(), ec);
+  std::array<char, 1024> error{};
+  if (module.table->write(path.c_str(), width, height, channels, type == PixelType::float32, pixels, error.data(),
+                          error.size()) != 0)
+    return std::unexpected(image_error(error.data(), path));
+  return {};
+}
+
+Result<ImagePixels> read_image_file(const std::string& path) {
+  const LoadedModule& module = image_module();
+  if (!module.table) return std::unexpected(image_error(module.error, path));
+  std::array<char, 1024> error{};
+  ImagePixels image;
+  float* pixels = nullptr;
+  if (module.table->read(path.c_str(), &image.width, &image.height, &image.channels, &pixels, error.data(),
+                         error.size()) != 0)
+    return std::unexpected(image_error(error.data(), path));
+  image.values.assign(pixels, pixels + size_t(image.width) * image.height * image.channels);
+  module.table->free_pixels(pixels);
+  return image;
+}
+
+}  // namespace shaderbed

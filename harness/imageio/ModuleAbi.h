@@ -1,0 +1,21 @@
+#pragma once
+// The C interface between shaderbed and its OpenImageIO module (module/OiioModule.cpp).
+// C types only, so the module and the binary share no C++ ABI beyond this table; bump the
+// symbol's version when a function changes.
+#include <cstddef>
+
+extern "C" {
+
+struct ShaderbedImageIo {
+  // 0 on success; else the message in error[error_size].
+  int (*write)(const char* path, int width, int height, int channels, int is_float, const void* pixels, char* error,
+               size_t error_size);
+  // On success *pixels is malloc'd width * height * channels floats, freed with free_pixels.
+  int (*read)(const char* path, int* width, int* height, int* channels, float** pixels, char* error,
+              size_t error_size);
+  void (*free_pixels)(float* pixels);
+};
+
+// The module's one exported symbol.
+const ShaderbedImageIo* shaderbed_image_io_v1();
+}

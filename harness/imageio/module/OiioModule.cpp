@@ -1,0 +1,55 @@
+// The OpenImageIO side of image I/O, built as a module that shaderbed dlopens on the first
+// image read or write (ImageIoModule.h says why).
+#include <OpenImageIO/imageio.h>
+
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
+#include "imageio/ModuleAbi.h"
+
+namespace {
+
+int failed(const std::string& message, char* error, size_t error_size) {
+  if (error_size > 0) {
+    std::strncpy(error, message.c_str(), error_size - 1);
+    error[error_size - 1] = '\0';
+  }
+  return 1;
+}
+
+int write(const char* path, int width, int height, int channels, int is_float, const void* pixels, char* error,
+          size_t error_size) {
+  const OIIO::ImageSpec spec(width, height, channels, is_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+  auto out = OIIO::ImageOutput::create(path);
+  if (!out) return failed("no image writer: " + OIIO::geterror(), error, error_size);
+  if (!out->open(path, spec) || !out->write_image(spec.format, pixels) || !out->close())
+    return failed(out->geterror(), error, error_size);
+  return 0;
+}
+
+int read(const char* path, int* width, int* height, int* channels, float** pixels, char* error, size_t error_size) {
+  auto in = OIIO::ImageInput::open(path);
+  if (!in) return failed(OIIO::geterror(), error, error_size);
+  const OIIO::ImageSpec& spec = in->spec();
+  const size_t count = size_t(spec.width) * spec.height * spec.nchannels;
+  auto* data = static_cast<float*>(std::malloc(count * sizeof(float)));
+  if (!data) return failed("out of memory", error, error_size);
+  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, data)) {
+    std::free(data);
+    return failed(in->geterror(), error, error_size);
+  }
+  *width = spec.width;
+  *height = spec.height;
+  *channels = spec.nchannels;
+  *pixels = data;
+  return 0;
+}
+
+void free_pixels(float* pixels) { std::free(pixels); }
+
+const ShaderbedImageIo kTable{write, read, free_pixels};
+
+}  // namespace
+
+extern "C" __attribute__((visibility("default"))) const ShaderbedImageIo* shaderbed_image_io_v1() { return &kTable; }

@@ -1,0 +1,45 @@
+#include "run/ProgramCache.h"
+
+#include <chrono>
+#include <filesystem>
+
+#include "compile/RelaxedPrecision.h"
+#include "run/ProgramArtefacts.h"
+#include "scene/CaseProgram.h"
+#include "stats/SpirvCounts.h"
+
+namespace shaderbed {
+namespace {
+
+Result<ProgramSource> relaxed(ProgramSource source) {
+  for (ShaderSource* stage : {&source.vertex, &source.fragment}) {
+    auto relaxed = relax_precision(source.language, std::move(*stage));
+    if (!relaxed) return std::unexpected(relaxed.error());
+    *stage = std::move(*relaxed);
+  }
+  return source;
+}
+
+}  // namespace
+
+const CachedProgram& ProgramCache::get(const Case& c, const Variant& variant, Language language) {
+  const std::string key = c.name + "/" + variant.name + "/" + to_string(language);
+  if (auto it = programs_.find(key); it != programs_.end()) return it->second;
+  CachedProgram entry;
+  const auto t0 = std::chrono::steady_clock::now();
+  auto source = load_case_program(language, variant.shaders.at(language), c.path);
+  if (source && options_.relaxed_precision) source = relaxed(std::move(*source));
+  entry.program = source ? compile_program(*source) : std::unexpected(source.error());
+  if (entry.program) {
+    auto vertex = stats::count_spirv(entry.program->vertex.spirv);
+    auto fragment = stats::count_spirv(entry.program->fragment.spirv);
+    if (vertex && fragment) entry.instructions = {vertex->total, fragment->total};
+  }
+  entry.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  if (entry.program && !options_.out_dir.empty())
+    (void)write_program_artefacts((std::filesystem::path(options_.out_dir) / c.name / variant.name).string(),
+                                  *entry.program, entry.sources);
+  return programs_.emplace(key, std::move(entry)).first->second;
+}
+
+}  // namespace shaderbed
