@@ -5,10 +5,10 @@
 
 namespace shaderbed {
 
-// The aligned result table (verdict "pass", "FAIL", "known" or "ERROR"; "min pass" is the
-// smallest interior threshold that would have passed; with timing, the draw times), then each new failure with its
-// attribution and image paths, the errors, the known failures with their reasons, the
-// known failures that passed, and the totals.
+// The aligned per-cell table, one row per cell (verdict "pass", "FAIL", "known" or
+// "ERROR"; "min pass" is the smallest interior threshold that would have passed; with
+// timing, the draw times and a note on reading them). `run --table` shows it; the
+// failures and totals under it are ConsoleProblems'.
 struct TableOptions {
   bool timing = false;   // add the draw's timed repeats (wall and driver clock) and build time
 };

@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "report/Markup.h"
+#include "report/SummaryMatrix.h"
 
 namespace shaderbed {
 namespace {
@@ -246,14 +247,15 @@ class Writer {
     const auto it = sources_.find(recorded);
     if (it == sources_.end() || it->second.empty())
       return fmt::format("<span class=\"missing\" title=\"{}\">{}: missing</span>", attr(recorded), escape(label));
-    return fmt::format("<a href=\"{}\" title=\"{}\">{}</a>", attr(it->second), attr(recorded), escape(label));
+    // No title with the recorded path: the link is the path, and 1400 cards repeat it ~10 times each.
+    return fmt::format("<a href=\"{}\">{}</a>", attr(it->second), escape(label));
   }
 
   std::string file_link(const std::string& recorded, const std::string& label) const {
     if (recorded.empty()) return "";
     const std::string file = resolve(recorded);
     if (file.empty()) return fmt::format("<span class=\"missing\" title=\"{}\">{}: missing</span>", attr(recorded), escape(label));
-    return fmt::format("<a href=\"{}\" title=\"{}\">{}</a>", attr(relative_url(file)), attr(recorded), escape(label));
+    return fmt::format("<a href=\"{}\">{}</a>", attr(relative_url(file)), escape(label));
   }
 
   static std::string join_nonempty(const std::vector<std::string>& parts, const char* sep) {
@@ -358,7 +360,10 @@ class Writer {
     auto num = [&](double v, bool shown) {
       return shown ? fmt::format("<td class=\"n\" data-v=\"{}\">{}</td>", sort_value(v), sci(v)) : "<td class=\"n\" data-v=\"\">-</td>";
     };
-    std::string h = fmt::format("<tbody class=\"cell {}\" id=\"c{}\" data-i=\"{}\"><tr class=\"row\" tabindex=\"0\">", k, i, i);
+    // data-id "/case/variant/lang/backend/path/shape/": the matrix links filter on its prefixes.
+    std::string h =
+        fmt::format("<tbody class=\"cell {}\" id=\"c{}\" data-i=\"{}\" data-id=\"{}\"{}><tr class=\"row\" tabindex=\"0\">", k,
+                    i, i, attr("/" + r.id() + "/"), collapsed() ? " hidden" : "");
     h += fmt::format("<td class=\"n\" data-v=\"{}\">{}</td>", i, i + 1);
     for (const std::string* s : {&r.case_name, &r.variant, &r.language, &r.backend, &r.path, &r.shape})
       h += "<td>" + escape(*s) + "</td>";
@@ -372,11 +377,88 @@ class Writer {
                   : "<td class=\"n\" data-v=\"\">-</td>";
     h += "<td>" + escape(r.attribution) + "</td>";
     h += fmt::format("<td class=\"n\" data-v=\"{}\">{:.1f}</td>", sort_value(own_ms(r)), own_ms(r));
-    h += fmt::format("</tr><tr class=\"detail\" hidden><td colspan=\"{}\">{}</td></tr></tbody>\n", kColumns, card(i));
+    // The card comes from the page's card store when the row is opened (see page()).
+    h += fmt::format("</tr><tr class=\"detail\" hidden><td colspan=\"{}\" data-card=\"{}\"></td></tr></tbody>\n",
+                     kColumns, i);
     return h;
   }
 
   static constexpr int kColumns = 16;
+
+  // Laying out a table's rows is most of what a browser spends on a big page (1400 rows:
+  // seconds), so above this many cells the table starts with no row shown until a matrix
+  // link, a filter or "show all" asks for rows.
+  static constexpr size_t kCollapseAbove = 250;
+  bool collapsed() const { return report_.results.size() > kCollapseAbove; }
+
+  // A link that shows the table's cells under `prefix`, e.g. "/phong/pixel/" (see data-id).
+  static std::string filter_link(const std::string& prefix, const std::string& text, const std::string& title) {
+    return fmt::format("<a class=\"mxl\" href=\"#filter={}&amp;status=\" title=\"{}\">{}</a>", attr(url_path(prefix)),
+                       attr(title), text);
+  }
+
+  // The summary matrix (report/SummaryMatrix), as the console prints it; every count links
+  // to its cells in the table.
+  std::string matrix_section() const {
+    const SummaryMatrix m = build_summary_matrix(report_);
+    if (m.rows.empty()) return "";
+    std::string h = "<section id=\"matrix\"><h2>Summary</h2>\n<table class=\"matrix\"><thead>";
+    // Header rows: language, backend, path, each spanning its run of equal columns.
+    auto spans = [&](auto&& name, auto&& same) {
+      std::string row;
+      for (size_t c = 0; c < m.columns.size();) {
+        size_t n = 1;
+        while (c + n < m.columns.size() && same(m.columns[c], m.columns[c + n])) ++n;
+        row += fmt::format("<th{}>{}</th>", n > 1 ? fmt::format(" colspan=\"{}\"", n) : "", escape(name(m.columns[c])));
+        c += n;
+      }
+      return row;
+    };
+    auto same_language = [](const MatrixColumn& a, const MatrixColumn& b) { return a.language == b.language; };
+    auto same_backend = [](const MatrixColumn& a, const MatrixColumn& b) {
+      return a.language == b.language && a.backend == b.backend;
+    };
+    h += "<tr><th class=\"rh\" rowspan=\"3\">case</th><th class=\"rh\" rowspan=\"3\">variant</th>" +
+         spans([](const MatrixColumn& c) { return c.language; }, same_language) +
+         "<th rowspan=\"3\" title=\"the row's largest interior error\">worst<br>max err</th>"
+         "<th rowspan=\"3\" title=\"the row's largest interior error as a share of its cell's threshold\">of tol</th></tr>\n";
+    h += "<tr>" + spans([](const MatrixColumn& c) { return c.backend; }, same_backend) + "</tr>\n";
+    h += "<tr>" + spans([](const MatrixColumn& c) { return c.path; }, [](auto&&, auto&&) { return false; }) +
+         "</tr></thead>\n<tbody>";
+    for (size_t r = 0; r < m.rows.size(); ++r) {
+      const MatrixRow& row = m.rows[r];
+      const std::string base = "/" + row.case_name + "/" + row.variant + "/";
+      h += "<tr>";
+      h += "<td class=\"rh\">" +
+           (r == 0 || m.rows[r - 1].case_name != row.case_name
+                ? filter_link("/" + row.case_name + "/", escape(row.case_name), "every cell of " + row.case_name)
+                : std::string()) +
+           "</td>";
+      h += "<td class=\"rh\">" +
+           filter_link(base, escape(row.variant), "every cell of " + row.case_name + "/" + row.variant) + "</td>";
+      for (size_t c = 0; c < row.cells.size(); ++c) {
+        const MatrixCell& cell = row.cells[c];
+        if (cell.empty()) {
+          h += "<td class=\"mx none\">-</td>";
+          continue;
+        }
+        const MatrixColumn& col = m.columns[c];
+        const char* k = cell.failed ? "fail" : cell.errors ? "error" : cell.known ? "known" : "pass";
+        std::string title = fmt::format("{} {} {}: {} of {} passed", row.case_name, row.variant, col.label(), cell.passed,
+                                        cell.total);
+        for (const auto& [n, what] :
+             {std::pair{cell.failed, "failed"}, std::pair{cell.known, "known failures"}, std::pair{cell.errors, "errors"}})
+          if (n) title += fmt::format(", {} {}", n, what);
+        const std::string cells = base + col.language + "/" + col.backend + "/" + col.path + "/";
+        h += fmt::format("<td class=\"mx {}\">{}</td>", k, filter_link(cells, escape(cell.text()), title));
+      }
+      h += fmt::format("<td class=\"n\">{}</td><td class=\"n\">{}</td></tr>\n", row.measured ? sci(row.worst_max_abs) : "-",
+                       row.measured ? escape(percent_of_threshold(row.worst_of_threshold)) : "-");
+    }
+    h += "</tbody></table>\n<p class=\"policy\">shapes passed of those run; <b>!</b> a new failure or error, <b>*</b> "
+         "known failures only. Click a count to show its cells in the table below.</p></section>\n";
+    return h;
+  }
 
   std::string charts_section() const {
     if (options_.charts.empty()) return "";
@@ -401,10 +483,10 @@ class Writer {
       h += fmt::format(
           "<details class=\"fc\" id=\"f{}\"{}><summary><span class=\"st {}\">{}</span> <b>{}</b> {} &nbsp;<span "
           "class=\"why\">{}{}</span> <a class=\"jump\" href=\"#c{}\">table&nbsp;row</a></summary>{}</details>\n",
-          i, n < open_limit ? " open" : "", k, status_label(k),
+          i, n < open_limit ? " open" : fmt::format(" data-card=\"{}\"", i), k, status_label(k),
           escape(r.case_name + " " + r.variant + " " + r.language),
           escape(r.backend + "/" + r.path + " " + r.shape), escape(headline),
-          r.attribution.empty() ? "" : " &mdash; " + escape(r.attribution), i, card(i));
+          r.attribution.empty() ? "" : " &mdash; " + escape(r.attribution), i, n < open_limit ? card(i) : "");
     }
     return h + "</section>\n";
   }
@@ -455,8 +537,10 @@ class Writer {
       if (n) nav += fmt::format("<a href=\"#sec-{}\">{} ({})</a>", k, title, n);
     }
     if (!options_.charts.empty()) nav = "<a href=\"#charts\">speed against error</a>" + nav;
+    if (!report_.results.empty()) nav = "<a href=\"#matrix\">summary</a>" + nav;
     h += "<nav>" + nav + "<a href=\"#all\">all cells</a></nav>\n";
     h += "</header>\n<main>\n";
+    h += matrix_section();
     h += charts_section();
 
     h += failure_section("fail", "Failures", 40);
@@ -469,7 +553,11 @@ class Writer {
          "value=\"known\">known</option><option value=\"error\">errors</option><option value=\"pass\">passed</option>"
          "</select> <span id=\"shown\"></span> <button id=\"expand\" type=\"button\">expand shown</button> <button "
          "id=\"collapse\" type=\"button\">collapse all</button></div>\n";
-    h += "<table id=\"cells\"><thead><tr>";
+    if (collapsed())
+      h += fmt::format("<p id=\"collapsed\">{} cells: click a count in the summary, filter, or <button id=\"showall\" "
+                       "type=\"button\">show all</button></p>\n",
+                       report_.results.size());
+    h += fmt::format("<table id=\"cells\"{}><thead><tr>", collapsed() ? " data-collapsed=\"1\"" : "");
     const char* const cols[kColumns][3] = {
         {"index", "num", "#"},          {"case", "str", "case"},       {"variant", "str", "variant"},
         {"language", "str", "lang"},    {"backend", "str", "backend"}, {"path", "str", "path"},
@@ -497,7 +585,12 @@ class Writer {
     h += "<script type=\"application/json\" id=\"sb-images\">{";
     for (size_t i = 0; i < store_.size(); ++i)
       h += fmt::format("{}\"{}\":\"{}\"", i ? ",\n" : "", store_[i].first, store_[i].second);
-    h += "}</script>\n<script>\n" + std::string(kScript) + "</script>\n</body></html>\n";
+    h += "}</script>\n";
+    // Every cell's card, as HTML in a JSON array, put into the page when it is opened:
+    // thousands of hidden cards would otherwise be parsed into the DOM on load.
+    h += "<script type=\"application/json\" id=\"sb-cards\">[";
+    for (size_t i = 0; i < report_.results.size(); ++i) h += (i ? ",\n" : "") + markup::script_json_string(card(i));
+    h += "]</script>\n<script>\n" + std::string(kScript) + "</script>\n</body></html>\n";
     return h;
   }
 
@@ -541,12 +634,28 @@ figure img.zoom{width:auto;max-width:none;min-width:384px;cursor:zoom-out}
 #cells tbody.fail tr.row{background:#fff4f4}#cells tbody.error tr.row{background:#faf4ff}#cells tbody.known tr.row{background:#fffbeb}
 #cells tr.detail>td{white-space:normal;background:#fcfcfc;border-bottom:2px solid #ccc}
 .filters{margin:6px 0}
+table.matrix{border-collapse:collapse;background:#fff;font-size:13px}
+table.matrix th,table.matrix td{padding:2px 8px;border:1px solid #e3e3e3;text-align:center;white-space:nowrap}
+table.matrix th{background:#e9ecef;font-weight:600}
+table.matrix .rh{text-align:left}table.matrix td.n{text-align:right;font-variant-numeric:tabular-nums}
+table.matrix a.mxl{color:inherit;text-decoration:none;display:block}table.matrix a.mxl:hover{text-decoration:underline}
+table.matrix td.mx{font-variant-numeric:tabular-nums}table.matrix td.none{color:#bbb}
+table.matrix td.pass{background:#eef9f0}table.matrix td.fail{background:#fbd5d5;color:#8a1111;font-weight:600}
+table.matrix td.known{background:#fdf0c4;color:#6b5200}table.matrix td.error{background:#e7d4f7;color:#4b1677;font-weight:600}
 )css";
 
   static constexpr const char* kScript = R"js(
 (function () {
   'use strict';
   var store = JSON.parse(document.getElementById('sb-images').textContent);
+  var cardStore = null;   // parsed on the first card opened
+  // Puts a lazily stored card into `el` (a detail cell or a closed failure card).
+  function fill(el) {
+    if (el.dataset.card === undefined) return;
+    if (!cardStore) cardStore = JSON.parse(document.getElementById('sb-cards').textContent);
+    el.insertAdjacentHTML('beforeend', cardStore[+el.dataset.card]);
+    delete el.dataset.card;
+  }
   var body = document.body;
   var table = document.getElementById('cells');
   var timer = null;
@@ -585,7 +694,7 @@ figure img.zoom{width:auto;max-width:none;min-width:384px;cursor:zoom-out}
     var detail = tbody.rows[1];
     if (open === undefined) open = detail.hidden;
     detail.hidden = !open;
-    if (open) show(detail);
+    if (open) { fill(detail.cells[0]); show(detail); }
   }
 
   document.addEventListener('click', function (e) {
@@ -596,7 +705,11 @@ figure img.zoom{width:auto;max-width:none;min-width:384px;cursor:zoom-out}
     var jump = e.target.closest('a.jump');
     if (jump) {
       var target = document.getElementById(jump.getAttribute('href').slice(1));
-      if (target) { target.hidden = false; toggle(target, true); }
+      if (target) {
+        if (collapsed) { filter.value = target.dataset.id; apply(); }   // just this row of a big table
+        target.hidden = false;
+        toggle(target, true);
+      }
     }
   });
   document.addEventListener('keydown', function (e) {
@@ -607,8 +720,8 @@ figure img.zoom{width:auto;max-width:none;min-width:384px;cursor:zoom-out}
     if (th) { e.preventDefault(); sortBy(th); }
   });
   Array.prototype.forEach.call(document.querySelectorAll('details.fc'), function (d) {
-    if (d.open) show(d);
-    d.addEventListener('toggle', function () { if (d.open) show(d); });
+    if (d.open) { fill(d); show(d); }
+    d.addEventListener('toggle', function () { if (d.open) { fill(d); show(d); } });
   });
 
   // Sorting: numbers by data-v (unmeasured cells last either way), text by content; ties
@@ -646,20 +759,25 @@ figure img.zoom{width:auto;max-width:none;min-width:384px;cursor:zoom-out}
 
   // Filtering by text and status.
   var filter = document.getElementById('filter'), status = document.getElementById('status');
+  var collapsed = table.dataset.collapsed === '1', note = document.getElementById('collapsed');
   function apply() {
     var text = filter.value.toLowerCase(), st = status.value, shown = 0;
+    if (text || st) collapsed = false;   // a big table shows rows once asked for some
     Array.prototype.forEach.call(table.tBodies, function (b) {
       var k = b.classList.contains('pass') ? 'pass' : b.classList.contains('fail') ? 'fail'
             : b.classList.contains('known') ? 'known' : 'error';
       var ok = (!st || st === k || (st === 'failing' && k !== 'pass')) &&
-               (!text || b.rows[0].textContent.toLowerCase().indexOf(text) >= 0);
-      b.hidden = !ok;
-      shown += ok;
+               (!text || b.rows[0].textContent.toLowerCase().indexOf(text) >= 0 ||
+                (b.dataset.id || '').toLowerCase().indexOf(text) >= 0);
+      b.hidden = collapsed || !ok;
+      shown += !b.hidden;
     });
     document.getElementById('shown').textContent = shown + ' of ' + table.tBodies.length + ' shown';
+    if (note) note.hidden = !collapsed;
   }
   filter.addEventListener('input', apply);
   status.addEventListener('change', apply);
+  if (note) document.getElementById('showall').addEventListener('click', function () { collapsed = false; apply(); });
   document.getElementById('expand').addEventListener('click', function () {
     Array.prototype.forEach.call(table.tBodies, function (b) { if (!b.hidden) toggle(b, true); });
   });
@@ -667,19 +785,37 @@ figure img.zoom{width:auto;max-width:none;min-width:384px;cursor:zoom-out}
     Array.prototype.forEach.call(table.tBodies, function (b) { toggle(b, false); });
   });
 
-  // URL fragment: #expand-all&sort=max_abs:desc&status=failing&filter=text
-  location.hash.slice(1).split('&').forEach(function (opt) {
-    var eq = opt.indexOf('='), key = eq < 0 ? opt : opt.slice(0, eq), value = eq < 0 ? '' : decodeURIComponent(opt.slice(eq + 1));
-    if (key === 'filter') filter.value = value;
-    if (key === 'status') status.value = value;
-    if (key === 'sort') {
-      var parts = value.split(':'), th = table.querySelector('th[data-key="' + parts[0] + '"]');
-      if (th) sortBy(th, parts[1] === 'desc');
-    }
+  // URL fragment: #expand-all&sort=max_abs:desc&status=failing&filter=text. Read on load,
+  // on every change (back/forward) and from the matrix links, which also scroll to the table.
+  function options(hash) {
+    var expand = false, filtered = false;
+    hash.replace(/^#/, '').split('&').forEach(function (opt) {
+      if (!opt) return;
+      var eq = opt.indexOf('='), key = eq < 0 ? opt : opt.slice(0, eq), value = eq < 0 ? '' : decodeURIComponent(opt.slice(eq + 1));
+      if (key === 'filter') { filter.value = value; filtered = true; }
+      if (key === 'status') status.value = value;
+      if (key === 'expand-all') { expand = true; collapsed = false; }
+      if (key === 'sort') {
+        var parts = value.split(':'), th = table.querySelector('th[data-key="' + parts[0] + '"]');
+        if (th) sortBy(th, parts[1] === 'desc');
+      }
+    });
+    apply();
+    if (expand) Array.prototype.forEach.call(table.tBodies, function (b) { if (!b.hidden) toggle(b, true); });
+    return filtered;
+  }
+  document.addEventListener('click', function (e) {
+    var a = e.target.closest('a.mxl');
+    if (!a) return;
+    e.preventDefault();
+    try { history.pushState(null, '', a.getAttribute('href')); } catch (err) { /* some file: pages refuse */ }
+    options(a.getAttribute('href'));
+    document.getElementById('all').scrollIntoView();
   });
-  apply();
-  if (/(^|&)expand-all(&|$)/.test(location.hash.slice(1)))
-    Array.prototype.forEach.call(table.tBodies, function (b) { if (!b.hidden) toggle(b, true); });
+  window.addEventListener('hashchange', function () {
+    if (options(location.hash)) document.getElementById('all').scrollIntoView();
+  });
+  if (options(location.hash)) document.getElementById('all').scrollIntoView();
   settle();
 })();
 )js";

@@ -87,6 +87,26 @@ std::string base64(std::string_view bytes) {
   return out;
 }
 
+std::string script_json_string(std::string_view s) {
+  std::string out = "\"";
+  out.reserve(s.size() + s.size() / 8 + 2);
+  for (size_t i = 0; i < s.size(); ++i) {
+    const char c = s[i];
+    const char next = i + 1 < s.size() ? s[i + 1] : '\0';
+    switch (c) {
+      case '"': out += "\\\""; break;
+      case '\\': out += "\\\\"; break;
+      case '\n': out += "\\n"; break;
+      case '<': out += next == '!' ? "\\u003c" : "<"; break;
+      case '/': out += i > 0 && s[i - 1] == '<' ? "\\/" : "/"; break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20) out += fmt::format("\\u{:04x}", unsigned(c));
+        else out += c;
+    }
+  }
+  return out + "\"";
+}
+
 std::string sci(double v) {
   if (std::isnan(v)) return "nan";
   if (std::isinf(v)) return v > 0 ? "inf" : "-inf";

@@ -240,4 +240,85 @@ inline RunReport sample_report(const fs::path& out, int size = 48) {
   return report;
 }
 
+// A run without files, for the summary matrix and the console views:
+//   0 phong/pixel glsl vulkan/spirv sphere pass (4e-4)   1 ... cube fail (0.2, driver)
+//   2 phong/pixel glsl gl/glsl sphere pass (3e-4)        3 phong/pixel hlsl gl/cross sphere known (0.01)
+//   4 phong/vertex hlsl vulkan/spirv sphere error        5 lambert/pixel glsl vulkan/spirv sphere pass (NaN)
+//   6 lambert/pixel glsl vulkan/spirv cube pass (0.5; a known failure that passed)
+inline RunReport matrix_report() {
+  auto cell = [](std::string case_name, std::string variant, std::string lang, std::string backend, std::string path,
+                 std::string shape, std::string status, double max_abs) {
+    CellResult r;
+    r.case_name = std::move(case_name);
+    r.variant = std::move(variant);
+    r.language = std::move(lang);
+    r.backend = std::move(backend);
+    r.path = std::move(path);
+    r.shape = std::move(shape);
+    r.status = std::move(status);
+    r.metrics.max_abs = r.metrics.min_passing_interior = max_abs;
+    r.interior_threshold = 2e-3;
+    return r;
+  };
+  RunReport report;
+  report.wall_ms = 2500;
+  report.results = {cell("phong", "pixel", "glsl", "vulkan", "spirv", "sphere", "pass", 4e-4),
+                    cell("phong", "pixel", "glsl", "vulkan", "spirv", "cube", "fail", 0.2),
+                    cell("phong", "pixel", "glsl", "gl", "glsl", "sphere", "pass", 3e-4),
+                    cell("phong", "pixel", "hlsl", "gl", "cross", "sphere", "fail", 0.01),
+                    cell("phong", "vertex", "hlsl", "vulkan", "spirv", "sphere", "error", 0),
+                    cell("lambert", "pixel", "glsl", "vulkan", "spirv", "sphere", "pass",
+                         std::numeric_limits<double>::quiet_NaN()),
+                    cell("lambert", "pixel", "glsl", "vulkan", "spirv", "cube", "pass", 0.5)};
+  report.results[1].message = "interior max error 2.00e-01 > 2.00e-03";
+  report.results[1].attribution = "driver";
+  report.results[1].attribution_reason = "only vulkan differs";
+  report.results[3].message = "interior max error 1.00e-02 > 2.00e-03";
+  report.results[3].known_failure = true;
+  report.results[3].known_reason = "SPIRV-Cross drops precise";
+  report.results[4].message = "shaders/hlsl/phong_vs.hlsl:3: compile: syntax error";
+  report.results[6].known_failure = true;
+  report.results[6].known_reason = "flaky once";
+  return report;
+}
+
+// `cases` x 3 variants x the 10 language/backend/path columns x 4 shapes, a PNG render and
+// error map per cell and a reference per case/variant/shape under `out`, the first cell
+// failing: a default-suite-sized report for the HTML image policy.
+inline RunReport many_cell_report(const fs::path& out, int cases, int size = 32) {
+  static const char* const columns[][3] = {{"hlsl", "vulkan", "spirv"}, {"hlsl", "gl", "spirv"}, {"hlsl", "gl", "cross"},
+                                           {"cg", "vulkan", "spirv"},   {"cg", "gl", "spirv"},   {"cg", "gl", "cross"},
+                                           {"glsl", "vulkan", "spirv"}, {"glsl", "gl", "glsl"},  {"glsl", "gl", "spirv"},
+                                           {"glsl", "gl", "cross"}};
+  RunReport report;
+  report.out_dir = out.string();
+  for (int c = 0; c < cases; ++c)
+    for (const char* variant : {"pixel", "pixel_lut", "vertex"})
+      for (const char* shape : {"cone", "cube", "sphere", "torus"}) {
+        const std::string case_name = "case" + std::to_string(c);
+        const fs::path dir = out / case_name / variant / shape;
+        write_test_png(dir / "reference.png", size, 0);
+        for (const auto& col : columns) {
+          CellResult r;
+          r.case_name = case_name;
+          r.variant = variant;
+          r.language = col[0];
+          r.backend = col[1];
+          r.path = col[2];
+          r.shape = shape;
+          r.status = report.results.empty() ? "fail" : "pass";
+          r.metrics.max_abs = report.results.empty() ? 0.25 : 1e-4;
+          r.interior_threshold = 2e-3;
+          const std::string stem = r.language + "-" + r.backend + "-" + r.path;
+          r.artefacts.reference_png = (dir / "reference.png").string();
+          r.artefacts.render_png = (dir / (stem + ".png")).string();
+          r.artefacts.error_png = (dir / (stem + ".error.png")).string();
+          write_test_png(r.artefacts.render_png, size, 0.001);
+          write_test_png(r.artefacts.error_png, size, 0.001, true);
+          report.results.push_back(std::move(r));
+        }
+      }
+  return report;
+}
+
 }  // namespace shaderbed::test

@@ -15,8 +15,11 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "ReportTestSupport.h"
 #include "report/HtmlReport.h"
+#include "report/Markup.h"
 
 namespace shaderbed {
 namespace {
@@ -113,6 +116,22 @@ class Chromium {
   std::string last_command_;
 };
 
+// The cards the page keeps in its JSON store (put into the page when a row is opened).
+std::vector<std::string> stored_cards(const std::string& html) {
+  const std::string open = "<script type=\"application/json\" id=\"sb-cards\">";
+  const size_t start = html.find(open);
+  if (start == std::string::npos) return {};
+  const size_t body = start + open.size();
+  return nlohmann::json::parse(html.substr(body, html.find("</script>", body) - body)).get<std::vector<std::string>>();
+}
+
+// The page's markup followed by its stored cards: everything a reader can get to.
+std::string page_text(const std::string& html) {
+  std::string text = html;
+  for (const std::string& card : stored_cards(html)) text += "\n" + card;
+  return text;
+}
+
 // ---- without a browser ----
 
 TEST(HtmlReport, WritesOneSelfContainedPageAndCopiesSources) {
@@ -121,8 +140,13 @@ TEST(HtmlReport, WritesOneSelfContainedPageAndCopiesSources) {
   auto summary = write_html(report, (dir / "html").string(), HtmlOptions{});
   ASSERT_TRUE(summary) << summary.error().to_string();
   const std::string html = slurp(dir / "html" / "index.html");
+  const std::string text = page_text(html);
   EXPECT_EQ(summary->html_bytes, html.size());
   EXPECT_EQ(count(html, "<tbody class=\"cell "), report.results.size());
+  EXPECT_EQ(stored_cards(html).size(), report.results.size()) << "a card per cell, in the store";
+  EXPECT_EQ(html.find("<tbody class=\"cell pass\" id=\"c0\" data-i=\"0\" data-id=\"/lambert/pixel/glsl/vulkan/spirv/sphere/\">"),
+            html.find("<tbody class=\"cell pass\" id=\"c0\""))
+      << "a small table is shown as it is";
   // Nothing from the network: no external scripts, styles or images.
   for (const char* external : {"src=\"http", "href=\"http", "src=\"//", "<link", "@import", "url("})
     EXPECT_EQ(html.find(external), std::string::npos) << external;
@@ -136,18 +160,20 @@ TEST(HtmlReport, WritesOneSelfContainedPageAndCopiesSources) {
   EXPECT_EQ(summary->sources_copied, 3u);
   EXPECT_EQ(slurp(dir / "html/sources/lambert/pixel/glsl.frag.spvasm.txt"), "; SPIR-V\n; Version: 1.0\nOpCapability Shader\n");
   EXPECT_TRUE(fs::exists(dir / "html/sources/lambert/pixel/hlsl.frag.cross.glsl.txt"));
-  EXPECT_NE(html.find("href=\"sources/lambert/pixel/glsl.frag.spvasm.txt\""), std::string::npos);
-  EXPECT_NE(html.find("vertex GLSL (SPIRV-Cross): missing"), std::string::npos);
+  EXPECT_NE(text.find("href=\"sources/lambert/pixel/glsl.frag.spvasm.txt\""), std::string::npos);
+  EXPECT_NE(text.find("vertex GLSL (SPIRV-Cross): missing"), std::string::npos);
   // Text is escaped; the header has the toolchain and totals.
-  EXPECT_EQ(html.find("<script>alert"), std::string::npos);
-  EXPECT_NE(html.find("&lt;script&gt;alert(1)&lt;/script&gt; &amp; &quot;quotes&quot; \\x01 control \xef\xbf\xbd byte"),
+  EXPECT_EQ(text.find("<script>alert"), std::string::npos);
+  EXPECT_NE(text.find("&lt;script&gt;alert(1)&lt;/script&gt; &amp; &quot;quotes&quot; \\x01 control \xef\xbf\xbd byte"),
             std::string::npos);
   for (const char* needle : {"glslang 11:12.0.0", "SPIRV-Tools v2022.4", "spirv-cross 2022.12.01", "Mesa 22.3.6 llvmpipe",
                              "<b>6</b> cells", "<b>2</b> passed", "<b>2</b> failed", "<b>1</b> known failures",
                              "<b>1</b> errors", "known failure</b>: SPIRV-Cross 2022 drops precise",
                              "wall 0.750 [0.688, 1.125], timestamp queries 0.625 [0.500, 0.875]",
                              "vertex 10, fragment 34"})
-    EXPECT_NE(html.find(needle), std::string::npos) << needle;
+    EXPECT_NE(text.find(needle), std::string::npos) << needle;
+  EXPECT_EQ(html.find("</script", html.find("id=\"sb-cards\"")), html.find("</script>\n<script>\n", html.find("id=\"sb-cards\"")))
+      << "nothing in the card store closes its script element early";
   // The same report gives the same page.
   ASSERT_TRUE(write_html(report, (dir / "html2").string()));
   EXPECT_EQ(slurp(dir / "html2" / "index.html"), html);
@@ -169,6 +195,77 @@ TEST(HtmlReport, ImageBudgetKeepsFailuresFirst) {
   const std::string failure = html.substr(card, html.find("</details>", card) - card);
   EXPECT_EQ(count(failure, "data-img=\""), 3u) << "reference, render and error of the failure are embedded";
   EXPECT_GE(count(failure, "data-file=\""), 2u) << "the other renders are linked";
+  fs::remove_all(dir);
+}
+
+TEST(HtmlReport, OpensWithTheSummaryMatrixLinkedToTheTable) {
+  const fs::path dir = test::fresh_dir("html_matrix");
+  const RunReport report = test::sample_report(dir / "out");
+  ASSERT_TRUE(write_html(report, (dir / "html").string()));
+  const std::string html = slurp(dir / "html" / "index.html");
+  const size_t matrix = html.find("<section id=\"matrix\">");
+  ASSERT_NE(matrix, std::string::npos);
+  EXPECT_LT(html.find("Mesa 22.3.6 llvmpipe"), matrix) << "after the toolchain and totals";
+  EXPECT_LT(matrix, html.find("id=\"sec-fail\"")) << "before the failures";
+  EXPECT_NE(html.find("<a href=\"#matrix\">summary</a>"), std::string::npos);
+  const std::string m = html.substr(matrix, html.find("</section>", matrix) - matrix);
+  // Columns only where cells exist, headed by language, backend and path.
+  EXPECT_NE(m.find("<th>hlsl</th><th>cg</th><th colspan=\"3\">glsl</th>"), std::string::npos) << m;
+  // Each count links to its cells (the table's data-id prefixes), with what it counts.
+  EXPECT_NE(m.find("<td class=\"mx fail\"><a class=\"mxl\" href=\"#filter=/lambert/pixel/glsl/vulkan/spirv/&amp;status=\" "
+                   "title=\"lambert pixel glsl vulkan/spirv: 1 of 2 passed, 1 failed\">1/2!</a></td>"),
+            std::string::npos)
+      << m;
+  EXPECT_NE(m.find(">0/1*</a>"), std::string::npos) << m;
+  EXPECT_NE(m.find("<td class=\"mx error\">"), std::string::npos) << m;
+  EXPECT_NE(m.find("href=\"#filter=/phong%3C%26%3E%22%27/pixel/glsl/gl/spirv/&amp;status=\""), std::string::npos)
+      << "names are percent-encoded in the link\n" << m;
+  EXPECT_NE(m.find("href=\"#filter=/lambert/pixel/&amp;status=\""), std::string::npos) << "the row's own link";
+  EXPECT_NE(m.find("<td class=\"n\">nan</td><td class=\"n\">nan</td></tr>"), std::string::npos)
+      << "the worst error of lambert/pixel, and its share of the threshold";
+  EXPECT_NE(m.find("<td class=\"n\">1.00e-05</td><td class=\"n\">&lt;1%</td></tr>"), std::string::npos) << m;
+  for (const CellResult& r : report.results)
+    EXPECT_NE(html.find("data-id=\"" + markup::escape("/" + r.id() + "/", true) + "\""), std::string::npos) << r.id();
+  fs::remove_all(dir);
+}
+
+TEST(HtmlReport, ManyCellsEmbedFailuresAndExamplesAndLinkTheRest) {
+  // 960 cells (8 cases x 3 variants x 10 columns x 4 shapes): embedding every PNG would make
+  // a page of ~9 MB of images alone.
+  const fs::path dir = test::fresh_dir("html_many");
+  const RunReport report = test::many_cell_report(dir / "out", 8);
+  ASSERT_EQ(report.results.size(), 960u);
+  const HtmlOptions defaults;
+  auto summary = write_html(report, (dir / "out").string(), defaults);   // next to the images, as scripts/demo does
+  ASSERT_TRUE(summary) << summary.error().to_string();
+  const std::string html = slurp(dir / "out" / "index.html");
+  EXPECT_LE(summary->image_bytes, defaults.image_budget);
+  EXPECT_GT(summary->images_linked, 1500u);
+  EXPECT_EQ(summary->images_missing, 0u);
+  // The size bound: the markup (the table, and every card in the store) and the budget.
+  EXPECT_LT(summary->html_bytes, size_t(6) << 20) << "a default-suite-sized page stays small enough to open at once";
+  EXPECT_LE(summary->html_bytes, defaults.max_page_bytes);
+  std::cout << "[ report   ] " << report.results.size() << " cells: index.html " << summary->html_bytes << " bytes, "
+            << summary->images_embedded << " images embedded (" << summary->image_bytes << " bytes), "
+            << summary->images_linked << " linked\n";
+
+  // The failing cell's images are embedded; so are one passing example's per case/variant.
+  const std::vector<std::string> cards = stored_cards(html);
+  ASSERT_EQ(cards.size(), report.results.size());
+  EXPECT_EQ(count(cards[0], "data-img=\""), 3u + 9u) << "its own, and the other renders of its shape\n" << cards[0];
+  EXPECT_EQ(count(cards[1], "data-img=\""), 3u) << "the first passing cell of case0/pixel is its example\n" << cards[1];
+  // Another passing cell's render and error map come from the run's files, by relative path.
+  const size_t last = report.results.size() - 1;
+  const CellResult& plain = report.results[last];
+  EXPECT_EQ(plain.status, "pass");
+  const std::string stem = plain.case_name + "/" + plain.variant + "/" + plain.shape + "/" + plain.language + "-" +
+                           plain.backend + "-" + plain.path;
+  EXPECT_NE(cards[last].find("data-file=\"" + stem + ".png\""), std::string::npos) << cards[last];
+  EXPECT_NE(cards[last].find("data-file=\"" + stem + ".error.png\""), std::string::npos) << cards[last];
+  // A big table starts with its rows hidden, so the page is quick to lay out.
+  EXPECT_EQ(count(html, "<tbody class=\"cell "), report.results.size());
+  EXPECT_EQ(count(html, "\" hidden><tr class=\"row\""), report.results.size());
+  EXPECT_NE(html.find("<p id=\"collapsed\">960 cells: click a count in the summary"), std::string::npos);
   fs::remove_all(dir);
 }
 
@@ -267,6 +364,33 @@ TEST_F(HtmlInChromium, TableImagesSortingAndScreenshot) {
   EXPECT_EQ(png.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
   EXPECT_GT(png.size(), 10000u) << "a rendered page, not a blank one";
   std::cout << "[ report   ] screenshot: " << shot.string() << "\n[ report   ] page: " << index.string() << "\n";
+}
+
+TEST_F(HtmlInChromium, MatrixLinksShowRowsOfABigTable) {
+  const fs::path dir = test::fresh_dir("html_many_chromium");
+  const RunReport report = test::many_cell_report(dir / "out", 4);
+  ASSERT_TRUE(write_html(report, (dir / "out").string()));
+  const fs::path index = dir / "out" / "index.html";
+  Chromium chromium;
+
+  const std::string opened = chromium.dump_dom(file_url(index), "big");
+  EXPECT_NE(opened.find("<span id=\"shown\">0 of 480 shown</span>"), std::string::npos) << chromium.last_command();
+  EXPECT_NE(opened.find("<section id=\"matrix\">"), std::string::npos);
+  EXPECT_EQ(body_attr(opened, "data-images-ready"), "all") << "the open failure card's images";
+
+  // What a matrix count links to: that case/variant/column's shapes.
+  const std::string cell = chromium.dump_dom(file_url(index, "filter=/case2/vertex/cg/gl/cross/&status="), "big-cell");
+  EXPECT_NE(cell.find("<span id=\"shown\">4 of 480 shown</span>"), std::string::npos);
+  EXPECT_NE(cell.find("<p id=\"collapsed\" hidden=\"\">"), std::string::npos);
+
+  // An opened row gets its card from the store, and its linked images load from the run's files.
+  const std::string row = chromium.dump_dom(file_url(index, "filter=/case3/pixel_lut/glsl/gl/glsl/torus/&expand-all"), "big-row");
+  EXPECT_NE(row.find("<span id=\"shown\">1 of 480 shown</span>"), std::string::npos);
+  EXPECT_EQ(count(row, "<tr class=\"detail\">"), 1u);
+  EXPECT_NE(row.find("<code>case3/pixel_lut/glsl/gl/glsl/torus</code>"), std::string::npos);
+  EXPECT_EQ(body_attr(row, "data-images-ready"), "all");
+  EXPECT_EQ(body_attr(row, "data-images-total"), std::to_string(3 + 3 + 9)) << "the failure card's and this row's";
+  fs::remove_all(dir);
 }
 
 }  // namespace

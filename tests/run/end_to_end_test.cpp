@@ -5,13 +5,15 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <regex>
 #include <set>
+#include <sstream>
 #include <tuple>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "cli/run/Runner.h"
+#include "run/Runner.h"
 
 namespace shaderbed {
 namespace {
@@ -145,6 +147,71 @@ TEST(EndToEnd, CliExitCodes) {
   auto [help_status, help] = shaderbed_cli("run --help");
   EXPECT_EQ(help_status, 0);
   EXPECT_NE(help.find("--backend"), std::string::npos);
+}
+
+// Lines of `text` that end with `suffix`.
+size_t lines_ending(const std::string& text, const std::string& suffix) {
+  size_t n = 0;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) n += line.ends_with(suffix);
+  return n;
+}
+
+TEST(EndToEnd, ConsoleShowsTheSummaryTheTableOrOnlyTheProblems) {
+  const fs::path dir = fs::temp_directory_path() / ("shaderbed_console_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string json = (dir / "r.json").string();
+  const std::string run = "run --case phong --shape sphere --size 32 --repeat 0";   // 3 variants x 10 paths
+  const std::regex totals("\n30 cells: 30 passed, 0 failed, 0 known, 0 errors in [0-9.]+ s\n");
+
+  // Default: progress (a line per tenth off a terminal), the matrix, the totals; no cell rows.
+  auto [status, out] = shaderbed_cli(run + " --json " + json);
+  ASSERT_EQ(status, 0) << out;
+  EXPECT_TRUE(std::regex_search(out, std::regex("\nphong +pixel +(1/1 +){10}[0-9.e+-]+ +[0-9<]+%\n +pixel_literal +(1/1 +){10}"))) << out;
+  EXPECT_NE(out.find("max err"), std::string::npos) << out;
+  EXPECT_EQ(out.find("min pass"), std::string::npos) << out;
+  EXPECT_EQ(lines_ending(out, "  pass"), 0u) << out;
+  EXPECT_NE(out.find("progress: 30/30 cells (100%)"), std::string::npos) << out;
+  size_t progress_lines = 0;
+  for (size_t at = out.find("progress: "); at != std::string::npos; at = out.find("progress: ", at + 1)) ++progress_lines;
+  EXPECT_LE(progress_lines, 10u) << out;
+  EXPECT_TRUE(std::regex_search(out, totals)) << out;
+
+  // --table (and -v): a row per cell; --timing alone shows the table too.
+  for (const char* flag : {" --table", " -v", " --timing"}) {
+    auto [table_status, table] = shaderbed_cli(run + flag);
+    EXPECT_EQ(table_status, 0) << flag << "\n" << table;
+    EXPECT_NE(table.find("min pass"), std::string::npos) << flag << "\n" << table;
+    EXPECT_EQ(table.find("worst"), std::string::npos) << flag << "\n" << table;
+    EXPECT_TRUE(std::regex_search(table, totals)) << flag << "\n" << table;
+  }
+  EXPECT_EQ(lines_ending(shaderbed_cli(run + " --table").second, "  pass"), 30u);
+
+  // --quiet: the totals only, when everything passed (and no progress off a terminal).
+  auto [quiet_status, quiet] = shaderbed_cli(run + " -q");
+  EXPECT_EQ(quiet_status, 0);
+  EXPECT_TRUE(std::regex_match(quiet, std::regex("30 cells: 30 passed, 0 failed, 0 known, 0 errors in [0-9.]+ s\n"))) << quiet;
+  EXPECT_EQ(shaderbed_cli(run + " -q --table").first, 2) << "--quiet and --table contradict";
+
+  // A failing run, quiet: the failures with their attribution, then the verdict.
+  auto [fail_status, failing] = shaderbed_cli("run --cases-dir " + (kSource / "tests" / "mutants" / "cases").string() +
+                                              " --case phong_reflect_sign --shape sphere --size 32 --repeat 0 --lang glsl -q");
+  EXPECT_EQ(fail_status, 1);
+  EXPECT_TRUE(failing.starts_with("failures:\n  phong_reflect_sign ")) << failing;
+  EXPECT_NE(failing.find("      attribution: "), std::string::npos) << failing;
+  EXPECT_TRUE(std::regex_search(failing, std::regex("\nFAIL: [0-9]+ cells: 0 passed, [0-9]+ failed, 0 known, 0 errors in [0-9.]+ s\n$")))
+      << failing;
+
+  // merge prints the same views.
+  auto [merged_status, merged] = shaderbed_cli("merge " + json);
+  EXPECT_EQ(merged_status, 0) << merged;
+  EXPECT_NE(merged.find("max err"), std::string::npos) << merged;
+  EXPECT_EQ(merged.find("min pass"), std::string::npos) << merged;
+  EXPECT_EQ(lines_ending(shaderbed_cli("merge " + json + " --table").second, "  pass"), 30u);
+  EXPECT_TRUE(std::regex_match(shaderbed_cli("merge " + json + " --quiet").second,
+                               std::regex("30 cells: 30 passed, 0 failed, 0 known, 0 errors in [0-9.]+ s\n")));
+  fs::remove_all(dir);
 }
 
 TEST(EndToEnd, TwoShardsMergedByTheCliEqualOneRun) {

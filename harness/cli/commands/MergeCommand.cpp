@@ -7,8 +7,8 @@
 
 #include "cli/commands/Command.h"
 #include "cli/commands/ReportOutputs.h"
-#include "cli/run/Runner.h"
-#include "report/ConsoleTable.h"
+#include "run/Runner.h"
+#include "report/ConsoleReport.h"
 #include "report/JsonReport.h"
 
 namespace shaderbed {
@@ -17,8 +17,23 @@ namespace {
 struct MergeArguments {
   std::vector<std::string> inputs;
   ReportOutputs outputs;
-  bool timing = false;
+  ConsoleOptions console;
 };
+
+// The console view flags, the same on `run` and `merge`.
+void add_console_flags(CLI::App* cmd, ConsoleOptions& console) {
+  auto table = [&console] { console.view = ConsoleView::table; };
+  CLI::Option* t = cmd->add_flag_callback("--table", table, "Print every cell's row instead of the summary matrix");
+  CLI::Option* v = cmd->add_flag_callback("--verbose,-v", table, "The same as --table");
+  CLI::Option* timing = cmd->add_flag("--timing", console.timing,
+                "Show each cell's draw time in the table (implies --table): median and 95% confidence interval of the "
+                "timed repeats (wall clock and driver clock) and the pipeline build time (the JSON always has them)");
+  cmd->add_flag_callback("--quiet,-q", [&console] { console.view = ConsoleView::quiet; },
+                         "Print only the cells that did not pass and the totals (no progress off a terminal)")
+      ->excludes(t)
+      ->excludes(v)
+      ->excludes(timing);
+}
 
 }  // namespace
 
@@ -27,7 +42,7 @@ Command add_merge_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("merge", "Join the JSON results of shards (or CI matrix jobs) into one report");
   cmd->add_option("results", args->inputs, "JSON result files written by 'shaderbed run --json'")->required();
   args->outputs.add_options(cmd);
-  cmd->add_flag("--timing", args->timing, "Show each cell's draw and build times in the table");
+  add_console_flags(cmd, args->console);
   return {cmd, [args] {
             if (!args->outputs.load_charts()) return kExitBadInput;
             RunReport merged;
@@ -49,7 +64,7 @@ Command add_merge_command(CLI::App& app) {
               }
             }
             sort_results(merged);
-            print_table(merged, stdout, {.timing = args->timing});
+            print_console_report(merged, stdout, args->console);
             if (!args->outputs.write(merged)) return kExitFail;
             return merged.acceptable() ? 0 : kExitFail;
           }};

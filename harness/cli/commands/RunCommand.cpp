@@ -1,6 +1,5 @@
 #include <unistd.h>
 
-#include <chrono>
 #include <filesystem>
 #include <memory>
 
@@ -8,35 +7,34 @@
 
 #include "cli/commands/Command.h"
 #include "cli/commands/ReportOutputs.h"
-#include "cli/run/Runner.h"
-#include "report/ConsoleTable.h"
+#include "run/Runner.h"
+#include "report/ConsoleProgress.h"
+#include "report/ConsoleReport.h"
 #include "report/JsonReport.h"
 
 namespace shaderbed {
 namespace {
 
-// "[ 42/140]  12.3 s  ETA 28 s" on one refreshed line, only on a terminal.
-class Progress {
- public:
-  Progress() : tty_(isatty(STDERR_FILENO)), start_(std::chrono::steady_clock::now()) {}
-  void update(size_t done, size_t total) {
-    if (!tty_) return;
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    const double eta = done ? elapsed / done * (total - done) : 0;
-    fmt::print(stderr, "\r[{:>4}/{}] {:6.1f} s  ETA {:5.1f} s", done, total, elapsed, eta);
-    if (done == total) fmt::print(stderr, "\r{:60}\r", "");
-  }
-
- private:
-  bool tty_;
-  std::chrono::steady_clock::time_point start_;
-};
-
 struct RunArguments {
   RunOptions options;
   ReportOutputs outputs;
-  bool timing = false;
+  ConsoleOptions console;
 };
+
+// The console view flags, the same on `run` and `merge`.
+void add_console_flags(CLI::App* cmd, ConsoleOptions& console) {
+  auto table = [&console] { console.view = ConsoleView::table; };
+  CLI::Option* t = cmd->add_flag_callback("--table", table, "Print every cell's row instead of the summary matrix");
+  CLI::Option* v = cmd->add_flag_callback("--verbose,-v", table, "The same as --table");
+  CLI::Option* timing = cmd->add_flag("--timing", console.timing,
+                "Show each cell's draw time in the table (implies --table): median and 95% confidence interval of the "
+                "timed repeats (wall clock and driver clock) and the pipeline build time (the JSON always has them)");
+  cmd->add_flag_callback("--quiet,-q", [&console] { console.view = ConsoleView::quiet; },
+                         "Print only the cells that did not pass and the totals (no progress off a terminal)")
+      ->excludes(t)
+      ->excludes(v)
+      ->excludes(timing);
+}
 
 }  // namespace
 
@@ -62,9 +60,7 @@ Command add_run_command(CLI::App& app) {
                   "TOML file of known failures ([[known]] cells = \"case/variant/lang/backend/path/shape\", "
                   "reason = \"...\"; * matches anything): they are reported as known and do not fail the run");
   cmd->add_option("--cases-dir", run.cases_dir, "Folder of case files")->default_str(default_cases_dir());
-  cmd->add_flag("--timing", args->timing,
-                "Show each cell's draw time in the table: median and 95% confidence interval of the timed repeats "
-                "(wall clock and driver clock) and the pipeline build time (the JSON always has them)");
+  add_console_flags(cmd, args->console);
   cmd->add_option("--repeat", run.timing.runs,
                   "Timed repeats of every draw (after --warmup untimed ones); 0 = draw once, untimed")
       ->capture_default_str()
@@ -80,15 +76,17 @@ Command add_run_command(CLI::App& app) {
 
   return {cmd, [args] {
             if (!args->outputs.load_charts()) return kExitBadInput;
-            Progress progress;
+            ConsoleProgress progress(stderr, isatty(STDERR_FILENO), args->console.view == ConsoleView::quiet);
             RunOptions options = args->options;
-            options.on_cell = [&](size_t done, size_t total, const CellResult&) { progress.update(done, total); };
+            options.on_cell = [&](size_t done, size_t total, const CellResult& cell) {
+              progress.update(done, total, cell);
+            };
             auto report = run_suite(options);
             if (!report) {
               fmt::print(stderr, "shaderbed: {}\n", report.error().to_string());
               return kExitBadInput;
             }
-            print_table(*report, stdout, {.timing = args->timing});
+            print_console_report(*report, stdout, args->console);
             if (!args->outputs.write(*report)) return kExitFail;
             if (!options.out_dir.empty())
               fmt::print("images: {}/<case>/<variant>/<shape>/\n", std::filesystem::absolute(options.out_dir).string());
