@@ -44,6 +44,33 @@ nlohmann::json comparison(const ReferenceVsDrivers& c) {
           {"runs", c.runs},           {"reference_ms", interval(c.reference)},  {"draws", draws}};
 }
 
+nlohmann::json process(const ProcessTiming& t) {
+  return {{"label", t.label},
+          {"command", t.command},
+          {"wall_ms", {{"median", t.wall.median}, {"low", t.wall.low}, {"high", t.wall.high}, {"level", t.wall.level}}},
+          {"runs", t.wall_ms},
+          {"cpu_ms", t.cpu_ms}};
+}
+
+nlohmann::json suite_process(const SuiteProcess& s) {
+  return {{"wall_ms", s.wall_ms}, {"cpu_ms", s.cpu_ms}, {"cells", s.cost.cells}, {"build_ms", s.cost.driver_build_ms()},
+          {"failures", s.failures}};
+}
+
+nlohmann::json processes(const ProcessCosts& p) {
+  nlohmann::json startup = nlohmann::json::object();
+  for (const ProcessTiming& t : p.startup) startup[t.label] = process(t);
+  const auto ratio = [](double a, double b) { return b > 0 ? a / b : 0.0; };
+  const double jit_floor = p.cold.cost.workers > 0 ? p.cold.cost.driver_build_ms() / p.cold.cost.workers : 0;
+  return {{"suite", {{"cold", suite_process(p.cold)}, {"warm", suite_process(p.warm)}, {"off", suite_process(p.off)}}},
+          {"ratios",
+           {{"warm_of_cold", ratio(p.warm.wall_ms, p.cold.wall_ms)},
+            {"off_of_cold", ratio(p.off.wall_ms, p.cold.wall_ms)},
+            {"cold_of_jit_floor", ratio(p.cold.wall_ms, jit_floor)}}},
+          {"cell", {{"cold", process(p.cell_cold)}, {"warm", process(p.cell_warm)}}},
+          {"startup", startup}};
+}
+
 }  // namespace
 
 std::string bench_json(const BenchReport& r) {
@@ -59,6 +86,7 @@ std::string bench_json(const BenchReport& r) {
       {"suite_cpu_ms", r.suite_cpu_ms},
       {"suite_timing", {{"warmup", r.suite_timing.warmup}, {"runs", r.suite_timing.runs}}},
       {"suite_failures", r.suite_failures},
+      {"processes", processes(r.processes)},
       {"reference_vs_drivers", comparisons}};
   return j.dump(2) + "\n";
 }

@@ -65,11 +65,49 @@ std::string comparison_section(const BenchReport& r) {
   return out;
 }
 
+std::string verdict(bool met) { return met ? "met" : "MISSED"; }
+
+std::string process_section(const BenchReport& r) {
+  const ProcessCosts& p = r.processes;
+  using G = ProcessGoals;
+  std::string out =
+      "Processes: the binary started as a child, wall clock from spawn to exit, caches in private folders\n"
+      "(cold: empty; warm: filled by the run before; off: --no-driver-cache --no-compile-cache)\n";
+  const double jit_floor = p.cold.cost.workers > 0 ? p.cold.cost.driver_build_ms() / p.cold.cost.workers : 0;
+  const auto suite = [&](const SuiteProcess& s, const std::string& note) {
+    out += fmt::format("  {:<22} {:9.2f} s   CPU {:7.2f} s   {}\n", "suite, caches " + s.state, s.wall_ms / 1000,
+                       s.cpu_ms / 1000, note);
+  };
+  const double cold_of_jit = jit_floor > 0 ? p.cold.wall_ms / jit_floor : 0;
+  suite(p.cold, fmt::format("{:.2f}x the JIT floor (pipeline build {:.2f} s / {} workers; goal <= {}x): {}", cold_of_jit,
+                            p.cold.cost.driver_build_ms() / 1000, p.cold.cost.workers, G::cold_suite_of_jit,
+                            verdict(cold_of_jit <= G::cold_suite_of_jit)));
+  const double warm_of_cold = p.cold.wall_ms > 0 ? p.warm.wall_ms / p.cold.wall_ms : 0;
+  const bool default_suite = r.cases.empty() && r.size == 256;
+  std::string warm_note = fmt::format("{:.2f}x cold (goal <= {}x): {}", warm_of_cold, G::warm_suite_of_cold,
+                                      verdict(warm_of_cold <= G::warm_suite_of_cold));
+  if (default_suite)
+    warm_note += fmt::format("; goal <= {:.1f} s: {}", G::warm_suite_ms / 1000, verdict(p.warm.wall_ms <= G::warm_suite_ms));
+  suite(p.warm, warm_note);
+  suite(p.off, fmt::format("{:.2f}x cold", p.cold.wall_ms > 0 ? p.off.wall_ms / p.cold.wall_ms : 0));
+  const auto timed = [&](const ProcessTiming& t, const std::string& note) {
+    out += fmt::format("  {:<22} {:9.1f} ms [{:.1f}, {:.1f}]  CPU {:6.1f} ms  {}\n", t.label, t.wall.median, t.wall.low,
+                       t.wall.high, t.cpu_ms, note);
+  };
+  timed(p.cell_cold, fmt::format("goal < {} ms: {}", G::cold_cell_ms, verdict(p.cell_cold.wall.median < G::cold_cell_ms)));
+  timed(p.cell_warm, fmt::format("goal <= {} ms: {}", G::warm_cell_ms, verdict(p.cell_warm.wall.median <= G::warm_cell_ms)));
+  for (const ProcessTiming& t : p.startup)
+    timed(t, t.label == "--help" ? fmt::format("goal <= {} ms: {}", G::help_ms, verdict(t.wall.median <= G::help_ms)) : "");
+  out += fmt::format("  one cell: shaderbed {}\n  medians [CI] of {} starts each\n\n", p.cell_warm.command,
+                     p.cell_warm.wall_ms.size());
+  return out;
+}
+
 }  // namespace
 
 std::string bench_table(const BenchReport& r) {
   std::string out = fmt::format("shaderbed bench: vulkan {} | gl {}\n\n", r.tools.vulkan_driver, r.tools.gl_driver);
-  return out + suite_section(r) + comparison_section(r);
+  return out + process_section(r) + "Where the cold suite's time went:\n" + suite_section(r) + comparison_section(r);
 }
 
 }  // namespace shaderbed::bench

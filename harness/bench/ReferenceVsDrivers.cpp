@@ -6,8 +6,8 @@
 
 #include <fmt/format.h>
 
-#include "cli/run/ReferenceRender.h"
-#include "cli/run/Runner.h"
+#include "run/ReferenceRender.h"
+#include "run/Runner.h"
 #include "scene/CaseFile.h"
 #include "scene/Primitives.h"
 #include "timing/MedianInterval.h"

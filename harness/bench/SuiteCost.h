@@ -38,6 +38,13 @@ struct SuiteCost {
   size_t errors = 0;             // cells with status "error": their parts are missing
 
   double driver_share() const { return summed_ms > 0 ? driver_ms / summed_ms : 0; }
+  // The drivers' pipeline builds + JIT: what a cold suite cannot avoid (its "JIT floor" is
+  // this divided by the workers).
+  double driver_build_ms() const {
+    for (const CostPart& p : parts)
+      if (p.name == "build") return p.ms;
+    return 0;
+  }
   double shaderbed_share() const { return summed_ms > 0 ? shaderbed_ms / summed_ms : 0; }
 };
 

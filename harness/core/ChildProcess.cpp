@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <spawn.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -48,9 +49,12 @@ Result<ChildExit> run_child(const std::vector<std::string>& args, const std::fil
   if (spawned != 0) return fail(stage, "cannot run " + args[0] + ": " + std::strerror(spawned));
 
   int status = 0;
-  while (::waitpid(pid, &status, 0) < 0)
+  rusage usage{};
+  while (::wait4(pid, &status, 0, &usage) < 0)
     if (errno != EINTR) return fail(stage, "lost track of " + args[0] + ": " + std::strerror(errno));
   ChildExit exit;
+  const auto ms = [](const timeval& t) { return t.tv_sec * 1e3 + t.tv_usec / 1e3; };
+  exit.cpu_ms = ms(usage.ru_utime) + ms(usage.ru_stime);
   if (WIFEXITED(status)) exit.code = WEXITSTATUS(status);
   else if (WIFSIGNALED(status)) exit.signal = WTERMSIG(status);
   exit.stdout_text = read_text_file(out);

@@ -16,6 +16,7 @@ struct ChildExit {
   int code = 0;         // exit status, when it exited
   int signal = 0;       // the signal that ended it, when one did
   std::string stdout_text, stderr_text;
+  double cpu_ms = 0;    // the child's user + sys time, all its threads
 
   bool succeeded() const { return signal == 0 && code == 0; }
   std::string how() const;   // "exit 3", "signal 11"

@@ -115,6 +115,32 @@ TEST(BenchCli, QuickRunWritesJsonWhosePartsAddUp) {
 
   EXPECT_NE(r.out.find("reference / lavapipe = "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("reference / llvmpipe = "), std::string::npos) << r.out;
+
+  // The processes: the suite in three cache states, one cell cold and warm, and start-up,
+  // each figure printed beside its goal. Only structure and consistency: no timing bound.
+  const nlohmann::json& p = j["processes"];
+  for (const char* state : {"cold", "warm", "off"}) {
+    const nlohmann::json& suite = p["suite"][state];
+    EXPECT_GT(suite["wall_ms"].get<double>(), 0) << state;
+    EXPECT_EQ(suite["cells"], s["cells"]) << state << ": the same selection in every state";
+    EXPECT_EQ(suite["failures"], 0) << state;
+  }
+  expect_close(p["ratios"]["warm_of_cold"],
+               p["suite"]["warm"]["wall_ms"].get<double>() / p["suite"]["cold"]["wall_ms"].get<double>(), "warm_of_cold");
+  for (const char* state : {"cold", "warm"}) {
+    const nlohmann::json& cell = p["cell"][state];
+    EXPECT_EQ(cell["runs"].size(), 3u) << state;
+    EXPECT_NE(cell["command"].get<std::string>().find("--case phong"), std::string::npos) << cell.dump();
+    EXPECT_LE(cell["wall_ms"]["low"].get<double>(), cell["wall_ms"]["median"].get<double>());
+  }
+  for (const char* command : {"--help", "eval", "merge"}) {
+    ASSERT_TRUE(p["startup"].contains(command)) << command;
+    EXPECT_EQ(p["startup"][command]["runs"].size(), 3u) << command;
+    EXPECT_GT(p["startup"][command]["wall_ms"]["median"].get<double>(), 0) << command;
+  }
+  for (const char* line : {"suite, caches cold", "suite, caches warm", "suite, caches off", "one cell, cold caches",
+                           "one cell, warm caches", "--help", "JIT floor", "goal <= 60 ms"})
+    EXPECT_NE(r.out.find(line), std::string::npos) << line << " missing from:\n" << r.out;
 }
 
 TEST(BenchCli, MalformedCompareCellIsBadInput) {

@@ -1,7 +1,8 @@
 // `shaderbed bench [--case A,B] [--size N] [--jobs N] [--compare case/variant/shape] [--repeat N] [--quick]
 // [--json FILE]`: the speed of shaderbed itself (docs/timing.md, "shaderbed bench"). The
-// whole suite's wall time, the drivers' share of it against shaderbed's own, and the CPU
-// reference's time against lavapipe's and llvmpipe's draw of the same scene, in one run.
+// whole suite as a process with caches cold, warm and off, one cell per process, start-up,
+// the drivers' share of the cold suite against shaderbed's own, and the CPU reference's
+// time against lavapipe's and llvmpipe's draw of the same scene, in one run.
 #include <unistd.h>
 
 #include <fstream>
@@ -13,7 +14,7 @@
 #include "bench/BenchJson.h"
 #include "bench/BenchTable.h"
 #include "cli/commands/Command.h"
-#include "cli/run/Runner.h"
+#include "run/Runner.h"
 
 namespace shaderbed {
 namespace {
@@ -41,9 +42,11 @@ Command add_bench_command(CLI::App& app) {
   bench::BenchOptions& o = args->options;
   CLI::App* cmd = app.add_subcommand(
       "bench",
-      "Time shaderbed itself: the whole suite's wall time, the drivers' share (build, draw, readback) against "
-      "shaderbed's own (compile, reference, compare), and the CPU reference against lavapipe's and llvmpipe's draw "
-      "of the same scene and size");
+      "Time shaderbed itself, side by side in one run: the whole suite as its own process with caches cold, warm "
+      "and off; one cell per process, cold and warm; the start-up of --help, eval and merge; the drivers' share of "
+      "the cold suite (build, draw, readback) against shaderbed's own (compile, reference, compare); and the CPU "
+      "reference against lavapipe's and llvmpipe's draw of the same scene and size. Each figure is printed beside "
+      "its goal (docs/timing.md)");
   cmd->add_option("--case", o.cases, "The suite's cases; default: all (the default suite)")->delimiter(',');
   cmd->add_option("--size", o.size, "Image width and height in pixels (the suite's default)")->capture_default_str();
   cmd->add_option("--jobs,-j", o.jobs, "Workers for the suite; 0 = one per core, as 'run'")
@@ -53,7 +56,9 @@ Command add_bench_command(CLI::App& app) {
                   "Cells (case/variant/shape) whose reference render is timed against the drivers' draw; default: "
                   "phong/pixel/sphere, cook_torrance/pixel/torus")
       ->delimiter(',');
-  cmd->add_option("--repeat", o.runs, "Timed repeats of each compared render and draw")
+  cmd->add_option("--repeat", o.runs,
+                  "Timed repeats of each compared render and draw, and starts of each timed process (one cell, "
+                  "--help, eval, merge)")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000));
   cmd->add_option("--out", o.out_dir,
@@ -62,7 +67,8 @@ Command add_bench_command(CLI::App& app) {
   cmd->add_option("--cases-dir", o.cases_dir, "Folder of case files")->default_str(default_cases_dir());
   cmd->add_option("--json", args->json, "Write the numbers as JSON");
   cmd->add_flag("--quick", args->quick,
-                "A small run for tests: phong only at 64x64, one compared cell, 3 repeats (explicit options win)");
+                "A small run for tests: phong only at 64x64, one compared cell, 3 repeats and process starts "
+                "(explicit options win)");
 
   return {cmd, [args, cmd] {
             BenchArguments a = *args;

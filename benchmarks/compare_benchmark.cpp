@@ -1,0 +1,30 @@
+// Google Benchmark: the image comparison at the suite's size. It runs once per cell
+// (~1400 times in the default suite), so its cost per 256x256 image is printed here
+// rather than asserted in a timed unit test (shared CI machines are noisy).
+#include <benchmark/benchmark.h>
+
+#include "CompareTestSupport.h"
+#include "compare/ImageComparison.h"
+
+namespace shaderbed {
+namespace {
+
+void BM_CompareImages(benchmark::State& state) {
+  const int size = int(state.range(0));
+  const double radius = 0.35 * size, centre = 0.5 * size;
+  const ReferenceImage ref = compare_test::disc_reference(radius, centre, centre, size);
+  // Slightly larger, so the silhouette band and the interior both have work to do.
+  const Image render = compare_test::disc_render(radius + 0.3, centre, centre, size);
+  const double area = 3.14159265358979 * radius * radius;
+  for (auto _ : state) {
+    Comparison c = compare_images(render, ref, {1e-4, 0.1}, area);
+    benchmark::DoNotOptimize(c);
+  }
+  state.SetItemsProcessed(state.iterations() * int64_t(size) * size);
+}
+BENCHMARK(BM_CompareImages)->Arg(64)->Arg(256)->Arg(1024)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace shaderbed
+
+BENCHMARK_MAIN();

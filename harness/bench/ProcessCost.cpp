@@ -1,0 +1,140 @@
+#include "bench/ProcessCost.h"
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "core/ChildProcess.h"
+#include "core/ScratchDirectory.h"
+#include "report/JsonReport.h"
+
+extern char** environ;
+
+namespace shaderbed::bench {
+namespace fs = std::filesystem;
+namespace {
+
+std::string self_binary() {
+  std::error_code ec;
+  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  return ec ? std::string("shaderbed") : self.string();
+}
+
+// Ours, with the cache folder replaced (SHADERBED_CACHE_DIR and Mesa's own variables, so
+// a user's MESA_SHADER_CACHE_DIR cannot make a cold run warm).
+std::vector<std::string> child_environment(const fs::path& cache_dir) {
+  std::vector<std::string> env;
+  for (char** e = environ; *e; ++e) {
+    const std::string entry = *e;
+    if (entry.starts_with("SHADERBED_CACHE_DIR=") || entry.starts_with("MESA_SHADER_CACHE_DIR=") ||
+        entry.starts_with("MESA_SHADER_CACHE_DISABLE=") || entry.starts_with("MESA_GLSL_CACHE_"))
+      continue;
+    env.push_back(entry);
+  }
+  env.push_back("SHADERBED_CACHE_DIR=" + cache_dir.string());
+  return env;
+}
+
+struct Timed {
+  double wall_ms = 0;
+  ChildExit exit;
+};
+
+Result<Timed> run_timed(const std::vector<std::string>& args, const fs::path& cache_dir, const fs::path& capture) {
+  std::vector<std::string> argv = {self_binary()};
+  argv.insert(argv.end(), args.begin(), args.end());
+  const auto t0 = std::chrono::steady_clock::now();
+  auto exit = run_child(argv, capture, "bench", child_environment(cache_dir));
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  if (!exit) return std::unexpected(exit.error());
+  // run exits 1 when a cell fails: still a measurement. 2 (bad input) or a signal is not.
+  if (exit->signal != 0 || exit->code > 1)
+    return fail("bench", fmt::format("'shaderbed {}' ended with {}: {}", fmt::join(args, " "), exit->how(),
+                                     exit->stderr_text.substr(0, exit->stderr_text.find('\n'))));
+  return Timed{ms, std::move(*exit)};
+}
+
+Result<SuiteProcess> suite_process(const std::string& state, std::vector<std::string> args, const fs::path& cache_dir,
+                                   const fs::path& scratch) {
+  const fs::path json = scratch / ("suite-" + state + ".json");
+  args.insert(args.begin(), "run");
+  for (const char* a : {"--repeat", "0", "--quiet", "--json"}) args.push_back(a);
+  args.push_back(json.string());
+  if (state == "off") args.insert(args.begin(), {"--no-driver-cache", "--no-compile-cache"});
+  auto timed = run_timed(args, cache_dir, scratch);
+  if (!timed) return std::unexpected(timed.error());
+  auto report = read_json(json.string());
+  if (!report) return std::unexpected(report.error());
+  return SuiteProcess{state, timed->wall_ms, timed->exit.cpu_ms, suite_cost(*report), report->tools, report->count("fail")};
+}
+
+// `runs` starts of one command; `fresh_cache` gives each its own empty cache folder.
+Result<ProcessTiming> time_command(const std::string& label, const std::vector<std::string>& args, int runs,
+                                   const fs::path& scratch, const std::string& cache_name, bool fresh_cache) {
+  ProcessTiming t{label, fmt::format("{}", fmt::join(args, " ")), {}, 0, {}};
+  std::vector<double> cpu;
+  for (int i = 0; i < runs; ++i) {
+    const fs::path cache = scratch / (fresh_cache ? fmt::format("{}-{}", cache_name, i) : cache_name);
+    auto timed = run_timed(args, cache, scratch);
+    if (!timed) return std::unexpected(timed.error());
+    t.wall_ms.push_back(timed->wall_ms);
+    cpu.push_back(timed->exit.cpu_ms);
+    if (fresh_cache) fs::remove_all(cache);
+  }
+  t.wall = median_interval(t.wall_ms);
+  t.cpu_ms = median_interval(cpu).median;
+  return t;
+}
+
+}  // namespace
+
+std::vector<std::string> default_cell_args() {
+  return {"run", "--case", "phong", "--variant", "pixel", "--lang", "glsl", "--backend", "vulkan",
+          "--shape", "sphere", "--repeat", "0", "--quiet"};
+}
+
+Result<ProcessCosts> measure_processes(const ProcessOptions& o) {
+  const auto step = [&](const std::string& text) {
+    if (o.on_step) o.on_step(text);
+  };
+  auto scratch = ScratchDirectory::create("bench");
+  if (!scratch) return std::unexpected(scratch.error());
+  const fs::path dir = scratch->path();
+  ProcessCosts costs;
+
+  // Cold fills the folder warm reads; off turns both caches off.
+  for (auto [state, out] : {std::pair{"cold", &costs.cold}, {"warm", &costs.warm}, {"off", &costs.off}}) {
+    step(fmt::format("suite as a process, caches {}", state));
+    auto suite = suite_process(state, o.suite_args, dir / (std::string(state) == "off" ? "cache-off" : "cache-suite"), dir);
+    if (!suite) return std::unexpected(suite.error());
+    *out = std::move(*suite);
+  }
+
+  step(fmt::format("one cell as a process, cold and warm, {} runs each", o.runs));
+  auto cold = time_command("one cell, cold caches", o.cell_args, o.runs, dir, "cache-cell-cold", true);
+  if (!cold) return std::unexpected(cold.error());
+  costs.cell_cold = std::move(*cold);
+  if (auto fill = run_timed(o.cell_args, dir / "cache-cell-warm", dir); !fill) return std::unexpected(fill.error());
+  auto warm = time_command("one cell, warm caches", o.cell_args, o.runs, dir, "cache-cell-warm", false);
+  if (!warm) return std::unexpected(warm.error());
+  costs.cell_warm = std::move(*warm);
+
+  // merge reads the cold suite's results: a command that draws nothing but parses JSON.
+  step(fmt::format("start-up of commands that draw nothing, {} runs each", o.runs));
+  const std::vector<std::pair<std::string, std::vector<std::string>>> commands = {
+      {"--help", {"--help"}},
+      {"eval", {"eval", "phong", "--L", "0,1,0", "--V", "1,1,0"}},
+      {"merge", {"merge", (dir / "suite-cold.json").string()}},
+  };
+  for (const auto& [label, args] : commands) {
+    auto t = time_command(label, args, o.runs, dir, "cache-startup", false);
+    if (!t) return std::unexpected(t.error());
+    costs.startup.push_back(std::move(*t));
+  }
+  return costs;
+}
+
+}  // namespace shaderbed::bench
