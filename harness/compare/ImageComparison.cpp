@@ -164,7 +164,7 @@ std::vector<PixelClass> classify_pixels(const ReferenceImage& ref) {
 }
 
 Comparison compare_images(const Image& render, const ReferenceImage& ref, const ComparisonThresholds& t,
-                          double expected_area) {
+                          double expected_area, const std::vector<PixelClass>* known_classes) {
   Comparison out;
   out.expected_area = expected_area > 0 ? expected_area : 0;
   out.min_passing_interior = out.min_passing_silhouette = kInf;
@@ -173,7 +173,13 @@ Comparison compare_images(const Image& render, const ReferenceImage& ref, const 
     return out;
   }
   const int w = ref.width, h = ref.height;
-  const std::vector<PixelClass> classes = classify_pixels(ref);
+  std::vector<PixelClass> own_classes;
+  const std::vector<PixelClass>* classes_of = known_classes;
+  if (!classes_of || classes_of->size() != size_t(w) * h) {
+    own_classes = classify_pixels(ref);
+    classes_of = &own_classes;
+  }
+  const std::vector<PixelClass>& classes = *classes_of;
   out.error = Image(w, h);
   double interior_sq = 0, band_sq = 0;
   size_t interior_finite = 0, band_finite = 0;
@@ -204,13 +210,21 @@ Comparison compare_images(const Image& render, const ReferenceImage& ref, const 
         add_values_fast(out.reference_values, q);
       }
       out.error.coverage[i] = static_cast<uint8_t>(cls);
-      float* e = out.error.pixel(x, y);
+      // Per channel |r - q| in double, once: the error image stores it as float, and an
+      // interior pixel's error (pixel_error's definition) is its largest channel.
+      double d[3];
+      bool unequal_nonfinite = false;
       for (int c = 0; c < 3; ++c) {
         const double a = r[c], b = q[c];
-        const double d = std::abs(a - b);
-        e[c] = std::isfinite(d) ? float(d) : value_class(a) == value_class(b) ? 0.0f : float(kInf);
+        d[c] = std::abs(a - b);
+        if (!std::isfinite(d[c])) {
+          const bool same = value_class(a) == value_class(b);
+          d[c] = same ? 0.0 : kInf;
+          unequal_nonfinite |= !same;
+        }
       }
-      e[3] = 1;
+      float* e = out.error.pixel(x, y);
+      e[0] = float(d[0]), e[1] = float(d[1]), e[2] = float(d[2]), e[3] = 1;
 
       switch (cls) {
         case PixelClass::background:
@@ -225,7 +239,7 @@ Comparison compare_images(const Image& render, const ReferenceImage& ref, const 
             ++out.interior.bad_pixels;
             break;
           }
-          const PixelError pe = pixel_error(r, q);
+          const PixelError pe{std::max({d[0], d[1], d[2]}), unequal_nonfinite};
           if (pe.nonfinite_mismatch) ++out.nonfinite_mismatch;
           out.interior.max_abs = std::max(out.interior.max_abs, pe.error);
           if (std::isfinite(pe.error)) {

@@ -85,8 +85,10 @@ struct Comparison {
 
 // `expected_area`: the shape's projected area in pixels from projected_area_pixels()
 // (scene/ProjectedArea.h) for the same transform and size; <= 0 skips that check.
+// `classes`: classify_pixels(reference) when the caller already has it (every render of a
+// group is compared with one reference); null = computed here.
 Comparison compare_images(const Image& render, const ReferenceImage& reference, const ComparisonThresholds&,
-                          double expected_area = 0);
+                          double expected_area = 0, const std::vector<PixelClass>* classes = nullptr);
 
 // The comparison's numbers in the results model (every CellMetrics field).
 CellMetrics cell_metrics(const Comparison&);

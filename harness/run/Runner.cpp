@@ -109,6 +109,7 @@ class GroupRunner {
         render_reference(mesh, scene_, c, o_.per_pixel_reference ? LightingMode::per_pixel : g.variant->mode);
     const double reference_ms = ms_since(t0);
     if (reference && !dir.empty()) write_reference(*reference, dir);
+    classes_ = reference ? classify_pixels(*reference) : std::vector<PixelClass>{};
 
     Thresholds thresholds{c.interior.max_abs, c.silhouette.max_abs, 0, ""};
     Result<const Texture*> lut = prepare_lut(g, mesh, thresholds);
@@ -223,7 +224,7 @@ class GroupRunner {
 
     const auto t0 = Clock::now();
     const Comparison cmp =
-        compare_images(rendered->image, *reference, {r.interior_threshold, r.silhouette_threshold}, area_);
+        compare_images(rendered->image, *reference, {r.interior_threshold, r.silhouette_threshold}, area_, &classes_);
     r.time_ms["compare"] = ms_since(t0);
     r.metrics = cell_metrics(cmp);
     r.status = cmp.pass ? "pass" : "fail";
@@ -252,10 +253,13 @@ class GroupRunner {
   const SceneSetup& scene_;
   Caches& caches_;
   double area_ = 0;   // the current group's expected projected area, in pixels
+  std::vector<PixelClass> classes_;   // the current group's reference, classified once for all its cells
 };
 
 // Consecutive groups of one case x variant: they share programs, so one worker runs
-// them all and builds each pipeline once.
+// them all and builds each pipeline once. Dealt largest first (by cells, which go with
+// the pipelines to build), so no worker is left with a big bundle when the others are
+// done; results are sorted afterwards, so the order changes nothing else.
 std::vector<std::vector<const CellGroup*>> bundles_of(const std::vector<CellGroup>& groups) {
   std::vector<std::vector<const CellGroup*>> bundles;
   for (const CellGroup& g : groups) {
@@ -263,6 +267,12 @@ std::vector<std::vector<const CellGroup*>> bundles_of(const std::vector<CellGrou
       bundles.emplace_back();
     bundles.back().push_back(&g);
   }
+  const auto cells = [](const std::vector<const CellGroup*>& bundle) {
+    size_t n = 0;
+    for (const CellGroup* g : bundle) n += g->cells.size();
+    return n;
+  };
+  std::stable_sort(bundles.begin(), bundles.end(), [&](const auto& a, const auto& b) { return cells(a) > cells(b); });
   return bundles;
 }
 
