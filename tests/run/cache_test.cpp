@@ -20,6 +20,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "ShellCommand.h"
 #include "backends/MesaEnvironment.h"
 #include "core/CacheSettings.h"
 #include "report/JsonReport.h"
@@ -52,15 +53,9 @@ class TempDir {
 // The CLI with SHADERBED_CACHE_DIR = `cache_root` and no Mesa cache variables of ours
 // or the user's: the binary decides. Returns the exit status and stdout+stderr.
 std::pair<int, std::string> shaderbed_cli(const fs::path& cache_root, const std::string& args) {
-  const std::string cmd = "env -u MESA_SHADER_CACHE_DIR -u MESA_SHADER_CACHE_DISABLE -u MESA_GLSL_CACHE_DIR "
-                          "-u MESA_GLSL_CACHE_DISABLE -u SHADERBED_MESA_SHADER_CACHE SHADERBED_CACHE_DIR='" +
-                          cache_root.string() + "' " + SHADERBED_BINARY + " " + args + " 2>&1";
-  std::string out;
-  FILE* p = popen(cmd.c_str(), "r");
-  char buf[4096];
-  while (size_t n = fread(buf, 1, sizeof buf, p)) out.append(buf, n);
-  const int status = pclose(p);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+  return test::run_shell("env -u MESA_SHADER_CACHE_DIR -u MESA_SHADER_CACHE_DISABLE -u MESA_GLSL_CACHE_DIR "
+                         "-u MESA_GLSL_CACHE_DISABLE -u SHADERBED_MESA_SHADER_CACHE SHADERBED_CACHE_DIR='" +
+                         cache_root.string() + "' " + SHADERBED_BINARY + " " + args);
 }
 
 // Every file under `dir` with its size, by relative path.

@@ -14,18 +14,13 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "ShellCommand.h"
 namespace {
 
 namespace fs = std::filesystem;
 
 std::pair<int, std::string> shaderbed_cli(const std::string& args) {
-  const std::string cmd = std::string(SHADERBED_BINARY) + " " + args + " 2>&1";
-  std::string out;
-  FILE* p = popen(cmd.c_str(), "r");
-  char buf[4096];
-  while (size_t n = fread(buf, 1, sizeof buf, p)) out.append(buf, n);
-  const int status = pclose(p);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+  return shaderbed::test::run_shell(std::string(SHADERBED_BINARY) + " " + args);
 }
 
 TEST(Conventions, VersionNamesShaderbedAndTheToolchain) {

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "ShellCommand.h"
 #include "run/Runner.h"
 
 namespace shaderbed {
@@ -23,13 +24,7 @@ const fs::path kSource = SHADERBED_SOURCE_DIR;
 
 // Runs the CLI; returns the exit status and stdout+stderr.
 std::pair<int, std::string> shaderbed_cli(const std::string& args) {
-  const std::string cmd = std::string(SHADERBED_BINARY) + " " + args + " 2>&1";
-  std::string out;
-  FILE* p = popen(cmd.c_str(), "r");
-  char buf[4096];
-  while (size_t n = fread(buf, 1, sizeof buf, p)) out.append(buf, n);
-  const int status = pclose(p);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+  return test::run_shell(std::string(SHADERBED_BINARY) + " " + args);
 }
 
 TEST(EndToEnd, DefaultSuitePassesOnEveryBackendAndGlPath) {

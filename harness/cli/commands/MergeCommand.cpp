@@ -20,21 +20,6 @@ struct MergeArguments {
   ConsoleOptions console;
 };
 
-// The console view flags, the same on `run` and `merge`.
-void add_console_flags(CLI::App* cmd, ConsoleOptions& console) {
-  auto table = [&console] { console.view = ConsoleView::table; };
-  CLI::Option* t = cmd->add_flag_callback("--table", table, "Print every cell's row instead of the summary matrix");
-  CLI::Option* v = cmd->add_flag_callback("--verbose,-v", table, "The same as --table");
-  CLI::Option* timing = cmd->add_flag("--timing", console.timing,
-                "Show each cell's draw time in the table (implies --table): median and 95% confidence interval of the "
-                "timed repeats (wall clock and driver clock) and the pipeline build time (the JSON always has them)");
-  cmd->add_flag_callback("--quiet,-q", [&console] { console.view = ConsoleView::quiet; },
-                         "Print only the cells that did not pass and the totals (no progress off a terminal)")
-      ->excludes(t)
-      ->excludes(v)
-      ->excludes(timing);
-}
-
 }  // namespace
 
 Command add_merge_command(CLI::App& app) {

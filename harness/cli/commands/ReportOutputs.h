@@ -5,10 +5,14 @@
 
 #include <CLI/CLI.hpp>
 
+#include "report/ConsoleReport.h"
 #include "report/HtmlReport.h"
 #include "report/Results.h"
 
 namespace shaderbed {
+
+// The console view flags, the same on `run` and `merge`: --table/-v, --timing, --quiet/-q.
+void add_console_flags(CLI::App* cmd, ConsoleOptions& console);
 
 struct ReportOutputs {
   std::string json, junit, html;
