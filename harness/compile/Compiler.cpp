@@ -45,7 +45,7 @@ Result<ShaderModule> compile_stage(Language language, const ShaderSource& source
                       .reflection = std::move(*reflection)};
 }
 
-Result<CompiledProgram> compile_program(const ProgramSource& p) {
+Result<CompiledProgram> compile_program(const ProgramSource& p, bool with_opengl) {
   CompiledProgram out;
   out.language = p.language;
   struct Job {
@@ -55,10 +55,12 @@ Result<CompiledProgram> compile_program(const ProgramSource& p) {
   };
   for (Job job : {Job{p.vertex, Target::vulkan, out.vertex}, Job{p.fragment, Target::vulkan, out.fragment},
                   Job{p.vertex, Target::opengl, out.vertex_gl}, Job{p.fragment, Target::opengl, out.fragment_gl}}) {
+    if (job.target == Target::opengl && !with_opengl) continue;
     auto module = compile_stage_cached(p.language, job.src, job.target);
     if (!module) return std::unexpected(module.error());
     job.dst = std::move(*module);
   }
+  if (!with_opengl) return out;
   auto vs = spirv_to_glsl_cached(out.vertex_gl.spirv, Stage::vertex);
   if (!vs) return std::unexpected(std::move(vs.error()).in_file(p.vertex.path));
   auto fs = spirv_to_glsl_cached(out.fragment_gl.spirv, Stage::fragment);

@@ -43,7 +43,9 @@ Result<ShaderModule> compile_stage(Language language, const ShaderSource& source
 
 // Both stages, both targets, and the SPIRV-Cross GLSL of the OpenGL-target modules;
 // through the compile caches (StageCache.h), so a warm process does not run a compiler.
-Result<CompiledProgram> compile_program(const ProgramSource& program);
+// with_opengl = false: only the Vulkan-target modules, for runs that draw nothing on GL
+// (no GL-target SPIR-V, no SPIRV-Cross GLSL: half the compiles of a cold one-cell run).
+Result<CompiledProgram> compile_program(const ProgramSource& program, bool with_opengl = true);
 
 // Human-readable SPIR-V disassembly (for reports and debugging).
 std::string disassemble(const std::vector<uint32_t>& spirv);

@@ -296,7 +296,7 @@ class HardRunner {
 
   const HardOptions& o_;
   std::vector<BackendSlot>& backends_;
-  ProgramCache programs_{ProgramOptions{}};
+  ProgramCache programs_{ProgramOptions{.opengl = wanted(o_.backends, "gl")}};
 };
 
 void summarise(HardReport& report) {

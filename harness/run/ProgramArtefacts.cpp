@@ -35,11 +35,14 @@ Result<void> write_program_artefacts(const std::string& dir, const CompiledProgr
   const std::string stem = (std::filesystem::path(dir) / to_string(p.language)).string();
   out.vertex_spirv = stem + ".vert.spvasm";
   out.fragment_spirv = stem + ".frag.spvasm";
+  for (auto written : {write_text(out.vertex_spirv, disassemble(p.vertex.spirv)),
+                       write_text(out.fragment_spirv, disassemble(p.fragment.spirv))})
+    if (!written) return written;
+  // A Vulkan-only run compiles no GL target, so there is no SPIRV-Cross GLSL to show.
+  if (p.vertex_cross_glsl.empty()) return {};
   out.vertex_cross_glsl = stem + ".vert.cross.glsl";
   out.fragment_cross_glsl = stem + ".frag.cross.glsl";
-  for (auto written : {write_text(out.vertex_spirv, disassemble(p.vertex.spirv)),
-                       write_text(out.fragment_spirv, disassemble(p.fragment.spirv)),
-                       write_text(out.vertex_cross_glsl, p.vertex_cross_glsl),
+  for (auto written : {write_text(out.vertex_cross_glsl, p.vertex_cross_glsl),
                        write_text(out.fragment_cross_glsl, p.fragment_cross_glsl)})
     if (!written) return written;
   return {};

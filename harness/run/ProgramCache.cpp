@@ -29,7 +29,7 @@ const CachedProgram& ProgramCache::get(const Case& c, const Variant& variant, La
   const auto t0 = std::chrono::steady_clock::now();
   auto source = load_case_program(language, variant.shaders.at(language), c.path);
   if (source && options_.relaxed_precision) source = relaxed(std::move(*source));
-  entry.program = source ? compile_program(*source) : std::unexpected(source.error());
+  entry.program = source ? compile_program(*source, options_.opengl) : std::unexpected(source.error());
   if (entry.program) {
     auto vertex = stats::count_spirv(entry.program->vertex.spirv);
     auto fragment = stats::count_spirv(entry.program->fragment.spirv);

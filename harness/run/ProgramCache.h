@@ -24,6 +24,7 @@ struct CachedProgram {
 struct ProgramOptions {
   bool relaxed_precision = false;   // floats declared relaxed (compile/RelaxedPrecision.h)
   std::string out_dir;              // "" = write no artefacts
+  bool opengl = true;               // false: Vulkan-target modules only (no GL cell will draw them)
 };
 
 // Not thread-safe: one per worker (the compile stage below it is shared and thread-safe).

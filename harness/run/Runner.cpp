@@ -75,7 +75,7 @@ GpuTiming gpu_timing(const RenderTimings& t, const TimingRequest& request) {
 
 // Everything computed once and shared by the cells that need it.
 struct Caches {
-  explicit Caches(const RunOptions& o) : programs({o.relaxed_precision, o.out_dir}) {}
+  explicit Caches(const RunOptions& o) : programs({o.relaxed_precision, o.out_dir, wanted(o.backends, "gl")}) {}
   ProgramCache programs;
   std::map<std::string, Mesh> meshes;                        // shape/tessellation
   std::map<std::string, double> areas;                       // shape/tessellation: projected pixels

@@ -171,6 +171,26 @@ TEST(Caches, ColdWarmAndOffRunsGiveIdenticalMetricsAndImages) {
   EXPECT_GE(images, cells_a.size()) << "a render per cell, plus errors";
 }
 
+// A run that draws nothing on GL compiles no GL target: two Vulkan stages instead of four
+// stages and two SPIRV-Cross outputs, so a cold Vulkan-only cell pays half the compiles.
+TEST(Caches, VulkanOnlyRunsCompileOnlyTheVulkanTarget) {
+  const auto misses = [](const std::string& backends) {
+    TempDir root;
+    const std::string json = root / "r.json";
+    const auto [status, out] = shaderbed_cli(root.path(), "run --case lambert --variant pixel --lang glsl --shape sphere "
+                                                          "--size 32 --repeat 0 --quiet --backend " + backends +
+                                                          " --json " + json);
+    EXPECT_EQ(status, 0) << out;
+    std::ifstream in(json);
+    const nlohmann::json j = nlohmann::json::parse(in);
+    for (const nlohmann::json& r : j["results"]) EXPECT_EQ(r["status"], "pass") << r.dump();
+    return j["cache"]["compile"]["misses"].get<size_t>();
+  };
+  const size_t vulkan = misses("vulkan"), both = misses("vulkan,gl");
+  EXPECT_EQ(vulkan, 2u) << "vertex and fragment, Vulkan target";
+  EXPECT_GT(both, vulkan) << "GL-target stages and SPIRV-Cross output on top";
+}
+
 TEST(Caches, RootOptionsAreAcceptedAfterEverySubcommand) {
   TempDir work;
   // Each command stopped by a bad name: the options parsed if the error is about the name.
