@@ -266,7 +266,9 @@ TEST(CgDialect, SamplerParametersGetTheirOwnBindings) {
   EXPECT_NE(a, ubo);
   EXPECT_NE(b, ubo);
   for (const SamplerBinding& s : m->reflection.samplers)
-    if (s.name == "wardTex") EXPECT_EQ(s.dimensions, 3u);
+    if (s.name == "wardTex") {
+      EXPECT_EQ(s.dimensions, 3u);
+    }
   EXPECT_NE(find_member(m->reflection, "Kd"), nullptr);
 }
 
