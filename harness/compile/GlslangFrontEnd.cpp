@@ -36,6 +36,11 @@ constexpr const char* kHlslPreamble =
     "#define POSITION SV_Position\n"
     "#define SHADERBED 1\n";
 
+std::string missing_entry_message(const ShaderSource& source) {
+  return std::string("no ") + to_string(source.stage) + " entry point '" + source.entry_point +
+         "' in this file (the case's " + to_string(source.stage) + "_entry names it; default main)";
+}
+
 }  // namespace
 
 // glslang's info log: "ERROR: file:LINE: message" (possibly several). Take the first
@@ -128,8 +133,20 @@ Result<std::vector<uint32_t>> glslang_to_spirv(Language language, const ShaderSo
 
   glslang::TProgram program;
   program.addShader(&shader);
-  if (!program.link(msgs)) return std::unexpected(glslang_log_error(program.getInfoLog(), source.path, "link"));
-  if (!program.mapIO()) return std::unexpected(glslang_log_error(program.getInfoLog(), source.path, "I/O mapping"));
+  // glslang reports a missing entry function only as a linker warning ("Entry point not
+  // found"), without its name: say which function the file lacks and where it comes from.
+  const auto missing_entry = [&](const char* log) -> std::optional<Error> {
+    if (std::string(log).find("Entry point not found") == std::string::npos) return std::nullopt;
+    return Error{.message = missing_entry_message(source), .file = source.path, .stage = "compile"};
+  };
+  if (!program.link(msgs)) {
+    if (auto e = missing_entry(program.getInfoLog())) return std::unexpected(*e);
+    return std::unexpected(glslang_log_error(program.getInfoLog(), source.path, "link"));
+  }
+  if (!program.mapIO()) {
+    if (auto e = missing_entry(program.getInfoLog())) return std::unexpected(*e);
+    return std::unexpected(glslang_log_error(program.getInfoLog(), source.path, "I/O mapping"));
+  }
 
   std::vector<uint32_t> spirv;
   spv::SpvBuildLogger logger;

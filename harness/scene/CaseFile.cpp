@@ -111,8 +111,21 @@ Result<Case> load_case(const std::string& path) {
       auto fsrc = files ? (*files)["fragment"].value<std::string>() : std::nullopt;
       if (!vs || !fsrc)
         return std::unexpected(at(path, lnode, "expected { vertex = \"FILE\", fragment = \"FILE\" }"));
-      v.shaders[*lang] = ShaderFiles{(shader_root / *vs).lexically_normal().string(),
-                                     (shader_root / *fsrc).lexically_normal().string(), int(lnode.source().begin.line)};
+      ShaderFiles shader_files{(shader_root / *vs).lexically_normal().string(),
+                               (shader_root / *fsrc).lexically_normal().string(), int(lnode.source().begin.line)};
+      for (const auto& [key, value] : *files) {
+        const std::string k(key.str());
+        if (k == "vertex" || k == "fragment") continue;
+        if (k != "vertex_entry" && k != "fragment_entry")
+          return std::unexpected(at(path, value, "unknown key '" + k + "' in the " + std::string(lname.str()) +
+                                                     " shaders (vertex, fragment, vertex_entry, fragment_entry)"));
+        const auto entry = value.value<std::string>();
+        if (!entry || entry->empty()) return std::unexpected(at(path, value, k + " must name a function"));
+        if (*lang == Language::glsl && *entry != "main")
+          return std::unexpected(at(path, value, k + " = \"" + *entry + "\": GLSL stages are entered at main()"));
+        (k == "vertex_entry" ? shader_files.vertex_entry : shader_files.fragment_entry) = *entry;
+      }
+      v.shaders[*lang] = std::move(shader_files);
     }
     if (v.shaders.empty()) return std::unexpected(at(path, vnode, "variant '" + v.name + "' names no shaders"));
     c.variants.push_back(std::move(v));

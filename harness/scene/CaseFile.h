@@ -17,6 +17,10 @@ struct ShaderFiles {
   std::string vertex;     // absolute paths; existence is checked when a cell needs them,
   std::string fragment;   // so a missing file of one language does not block the others
   int line = 0;           // where the case file names them
+  // The stages' entry functions (`vertex_entry`, `fragment_entry` in the case): HLSL and
+  // Cg files name their own, and one file may hold both stages. GLSL is always main().
+  std::string vertex_entry = "main";
+  std::string fragment_entry = "main";
 };
 
 enum class LightingMode { per_vertex, per_pixel };

@@ -11,6 +11,8 @@ Result<ProgramSource> load_case_program(Language language, const ShaderFiles& fi
   if (!vs) return missing(files.vertex);
   auto fs = load_shader_source(Stage::fragment, files.fragment);
   if (!fs) return missing(files.fragment);
+  vs->entry_point = files.vertex_entry;
+  fs->entry_point = files.fragment_entry;
   return ProgramSource{language, std::move(*vs), std::move(*fs)};
 }
 

@@ -98,4 +98,44 @@ TEST_F(TempCase, MinimalCaseLoads) {
 }
 
 }  // namespace
+// A variant's shaders with `extra` added to the language's inline table.
+std::string entry_case(const std::string& language, const std::string& extra) {
+  return "model = \"lambert\"\n"
+         "[variants.pixel]\n" +
+         language + " = { vertex = \"x/one.hlsl\", fragment = \"x/one.hlsl\"" + extra + " }\n"
+         "[tolerance]\n"
+         "interior = { max_abs = 1e-4, reason = \"fp32\" }\n"
+         "silhouette = { max_abs = 1e-2, reason = \"edges\" }\n";
+}
+
+TEST_F(TempCase, EntryPointsDefaultToMainAndCanBeNamedPerStage) {
+  auto plain = load_case(write(entry_case("hlsl", "")));
+  ASSERT_TRUE(plain) << plain.error().to_string();
+  EXPECT_EQ(plain->variants[0].shaders.at(Language::hlsl).vertex_entry, "main");
+  EXPECT_EQ(plain->variants[0].shaders.at(Language::hlsl).fragment_entry, "main");
+
+  auto named = load_case(write(entry_case("hlsl", ", vertex_entry = \"LightVS\", fragment_entry = \"LightPS\"")));
+  ASSERT_TRUE(named) << named.error().to_string();
+  const ShaderFiles& f = named->variants[0].shaders.at(Language::hlsl);
+  EXPECT_EQ(f.vertex_entry, "LightVS");
+  EXPECT_EQ(f.fragment_entry, "LightPS");
+  EXPECT_EQ(f.vertex, f.fragment) << "one file may hold both stages";
+}
+
+TEST_F(TempCase, BadEntryKeysAreErrorsAtTheirLine) {
+  struct Bad {
+    std::string language, extra, says;
+  };
+  for (const Bad& b : {Bad{"hlsl", ", vertex_entyr = \"LightVS\"", "unknown key 'vertex_entyr'"},
+                       Bad{"hlsl", ", fragment_entry = \"\"", "fragment_entry must name a function"},
+                       Bad{"hlsl", ", fragment_entry = 3", "fragment_entry must name a function"},
+                       Bad{"glsl", ", vertex_entry = \"vs_main\"", "GLSL stages are entered at main()"}}) {
+    auto c = load_case(write(entry_case(b.language, b.extra)));
+    ASSERT_FALSE(c) << b.extra;
+    EXPECT_NE(c.error().message.find(b.says), std::string::npos) << c.error().to_string();
+    EXPECT_EQ(c.error().line, 3) << c.error().to_string();
+  }
+  EXPECT_TRUE(load_case(write(entry_case("glsl", ", vertex_entry = \"main\""))));
+}
+
 }  // namespace shaderbed

@@ -1,0 +1,62 @@
+// Shaders as their authors wrote them (tests/realworld/): each runs unchanged through the
+// runner on every path that takes it, with only a case file written next to it.
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "run/Runner.h"
+
+namespace shaderbed {
+namespace {
+
+namespace fs = std::filesystem;
+const fs::path kRealWorld = fs::path(SHADERBED_SOURCE_DIR) / "tests" / "realworld";
+
+TEST(RealShaders, OneFileWithNamedEntryPointsPassesOnEveryHlslPath) {
+  RunOptions o;
+  o.cases_dir = (kRealWorld / "cases").string();
+  o.cases = {"lambert_two_entries"};
+  o.size = 64;
+  o.timing = {.warmup = 0, .runs = 0};
+  auto report = run_suite(o);
+  ASSERT_TRUE(report) << report.error().to_string();
+  std::set<std::string> paths;
+  for (const CellResult& r : report->results) {
+    EXPECT_EQ(r.status, "pass") << r.id() << ": " << r.message;
+    paths.insert(r.backend + "/" + r.path);
+  }
+  EXPECT_EQ(paths, (std::set<std::string>{"vulkan/spirv", "gl/spirv", "gl/cross"}));
+  EXPECT_EQ(report->results.size(), 12u);
+}
+
+TEST(RealShaders, AnEntryPointTheFileDoesNotHaveIsAnErrorNamingIt) {
+  // The same shader and case, with the pixel stage's entry misspelt.
+  const fs::path root = fs::temp_directory_path() / ("shaderbed_realworld_" + std::to_string(::getpid()));
+  fs::create_directories(root / "cases");
+  fs::create_directory_symlink(kRealWorld / "hlsl", root / "hlsl");
+  std::ifstream in(kRealWorld / "cases" / "lambert_two_entries.toml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string good = "fragment_entry = \"LightPixelShader\"";
+  ASSERT_NE(text.find(good), std::string::npos);
+  text.replace(text.find(good), good.size(), "fragment_entry = \"LightPixelShder\"");
+  std::ofstream(root / "cases" / "lambert_two_entries.toml") << text;
+
+  RunOptions o;
+  o.cases_dir = (root / "cases").string();
+  o.size = 32;
+  o.shapes = {"sphere"};
+  o.timing = {.warmup = 0, .runs = 0};
+  auto report = run_suite(o);
+  fs::remove_all(root);
+  ASSERT_TRUE(report) << report.error().to_string();
+  ASSERT_FALSE(report->results.empty());
+  for (const CellResult& r : report->results) {
+    EXPECT_EQ(r.status, "error") << r.id();
+    EXPECT_NE(r.message.find("LightPixelShder"), std::string::npos) << r.message;
+    EXPECT_NE(r.message.find("lambert_two_entries.hlsl"), std::string::npos) << r.message;
+  }
+}
+
+}  // namespace
+}  // namespace shaderbed
