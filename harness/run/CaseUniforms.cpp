@@ -1,5 +1,7 @@
 #include "run/CaseUniforms.h"
 
+#include <algorithm>
+
 namespace shaderbed {
 
 Result<std::vector<float>> CaseUniforms::value(const UniformBlock& block, const UniformMember& member) const {
@@ -21,6 +23,22 @@ Result<std::vector<float>> CaseUniforms::value(const UniformBlock& block, const 
     out.insert(out.end(), v->second.begin(), v->second.end());
   }
   return out;
+}
+
+Result<void> CaseUniforms::check_all_bound(const CompiledProgram& program) const {
+  std::vector<std::string> problems;
+  for (const ShaderModule* module : {&program.vertex, &program.fragment})
+    for (const UniformBlock& block : module->reflection.uniform_blocks)
+      for (const UniformMember& member : block.members)
+        if (auto v = value(block, member); !v) {
+          const std::string problem = v.error().message;
+          if (std::find(problems.begin(), problems.end(), problem) == problems.end()) problems.push_back(problem);
+        }
+  if (problems.empty()) return {};
+  if (problems.size() == 1) return std::unexpected(Error{.message = problems.front(), .file = case_path_, .stage = "bind"});
+  std::string message = std::to_string(problems.size()) + " uniforms cannot be bound: ";
+  for (size_t i = 0; i < problems.size(); ++i) message += (i ? "; " : "") + problems[i];
+  return std::unexpected(Error{.message = message, .file = case_path_, .stage = "bind"});
 }
 
 NamedValues bindable_values(const SceneSetup& scene, const std::map<std::string, std::vector<double>>& params) {

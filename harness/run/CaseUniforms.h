@@ -3,6 +3,7 @@
 // a uniform name (or an HLSL register "cN" of the $Global block) to scene quantities
 // and model parameters, concatenated in order.
 #include "backends/UniformPacking.h"
+#include "compile/ShaderModule.h"
 #include "scene/CaseFile.h"
 #include "scene/Scene.h"
 
@@ -14,6 +15,10 @@ class CaseUniforms final : public UniformResolver {
       : bindings_(bindings), values_(std::move(values)), case_path_(std::move(case_path)) {}
 
   Result<std::vector<float>> value(const UniformBlock& block, const UniformMember& member) const override;
+
+  // Every uniform of both stages resolved before anything is drawn, so a case that misses
+  // several bindings hears of all of them in one error rather than one per run.
+  Result<void> check_all_bound(const CompiledProgram& program) const;
 
  private:
   const BindingTable& bindings_;

@@ -209,6 +209,7 @@ class GroupRunner {
     static const BindingTable no_bindings;
     const BindingTable& table = bindings == c.bindings.end() ? no_bindings : bindings->second;
     CaseUniforms uniforms(table, bindable_values(scene_, c.params), c.path);
+    if (auto bound = uniforms.check_all_bound(*compiled.program); !bound) return bound;
     CaseTextures textures(table, *lut, c.path);
     auto rendered = (*cell.backend->backend)
                         ->render(DrawJob{*compiled.program, cell.path, mesh, uniforms, scene_.width, scene_.height,

@@ -2,6 +2,9 @@
 // runner on every path that takes it, with only a case file written next to it.
 #include <filesystem>
 #include <fstream>
+#include <set>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -30,18 +33,20 @@ TEST(RealShaders, OneFileWithNamedEntryPointsPassesOnEveryHlslPath) {
   EXPECT_EQ(report->results.size(), 12u);
 }
 
-TEST(RealShaders, AnEntryPointTheFileDoesNotHaveIsAnErrorNamingIt) {
-  // The same shader and case, with the pixel stage's entry misspelt.
+// The corpus's lambert_two_entries case with `edit` applied (each pair: text to find, its
+// replacement), run on the sphere at 32 px.
+Result<RunReport> run_edited_case(const std::vector<std::pair<std::string, std::string>>& edits) {
   const fs::path root = fs::temp_directory_path() / ("shaderbed_realworld_" + std::to_string(::getpid()));
+  fs::remove_all(root);
   fs::create_directories(root / "cases");
   fs::create_directory_symlink(kRealWorld / "hlsl", root / "hlsl");
   std::ifstream in(kRealWorld / "cases" / "lambert_two_entries.toml");
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::string good = "fragment_entry = \"LightPixelShader\"";
-  ASSERT_NE(text.find(good), std::string::npos);
-  text.replace(text.find(good), good.size(), "fragment_entry = \"LightPixelShder\"");
+  for (const auto& [from, to] : edits) {
+    EXPECT_NE(text.find(from), std::string::npos) << from;
+    if (text.find(from) != std::string::npos) text.replace(text.find(from), from.size(), to);
+  }
   std::ofstream(root / "cases" / "lambert_two_entries.toml") << text;
-
   RunOptions o;
   o.cases_dir = (root / "cases").string();
   o.size = 32;
@@ -49,6 +54,24 @@ TEST(RealShaders, AnEntryPointTheFileDoesNotHaveIsAnErrorNamingIt) {
   o.timing = {.warmup = 0, .runs = 0};
   auto report = run_suite(o);
   fs::remove_all(root);
+  return report;
+}
+
+TEST(RealShaders, EveryUnboundUniformIsListedInOneError) {
+  auto report = run_edited_case({{"WorldViewProj = \"transform\"\n", ""}, {"MaterialDiffuse = \"diffuse\"\n", ""}});
+  ASSERT_TRUE(report) << report.error().to_string();
+  ASSERT_FALSE(report->results.empty());
+  for (const CellResult& r : report->results) {
+    EXPECT_EQ(r.status, "error") << r.id();
+    EXPECT_NE(r.message.find("2 uniforms cannot be bound"), std::string::npos) << r.message;
+    EXPECT_NE(r.message.find("'WorldViewProj'"), std::string::npos) << r.message;
+    EXPECT_NE(r.message.find("'MaterialDiffuse'"), std::string::npos) << r.message;
+  }
+}
+
+TEST(RealShaders, AnEntryPointTheFileDoesNotHaveIsAnErrorNamingIt) {
+  // The same shader and case, with the pixel stage's entry misspelt.
+  auto report = run_edited_case({{"fragment_entry = \"LightPixelShader\"", "fragment_entry = \"LightPixelShder\""}});
   ASSERT_TRUE(report) << report.error().to_string();
   ASSERT_FALSE(report->results.empty());
   for (const CellResult& r : report->results) {
