@@ -10,16 +10,6 @@
 
 namespace shaderbed {
 
-uint64_t fnv1a64(std::string_view bytes, uint64_t hash) {
-  for (const unsigned char c : bytes) {
-    hash ^= c;
-    hash *= 0x100000001b3ull;
-  }
-  return hash;
-}
-
-std::string hex64(uint64_t v) { return fmt::format("{:016x}", v); }
-
 std::optional<std::string> read_file_bytes(const std::filesystem::path& path) {
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0) return std::nullopt;

@@ -10,11 +10,9 @@
 #include <string>
 #include <string_view>
 
-namespace shaderbed {
+#include "core/Fnv1a.h"
 
-// FNV-1a, 64 bits: entry names (never trusted alone: entries carry their full key).
-uint64_t fnv1a64(std::string_view bytes, uint64_t hash = 0xcbf29ce484222325ull);
-std::string hex64(uint64_t v);   // 16 lower-case hex digits
+namespace shaderbed {
 
 // A whole file's bytes; nullopt when it cannot be read.
 std::optional<std::string> read_file_bytes(const std::filesystem::path& path);

@@ -13,6 +13,7 @@
 
 #include <fmt/format.h>
 
+#include "core/Fnv1a.h"
 #include "report/Markup.h"
 #include "report/SummaryMatrix.h"
 
@@ -65,12 +66,6 @@ std::string url_path(const std::string& path) {
     else out += fmt::format("%{:02X}", c);
   }
   return out;
-}
-
-uint64_t fnv1a(std::string_view s) {
-  uint64_t h = 1469598103934665603ull;
-  for (unsigned char c : s) h = (h ^ c) * 1099511628211ull;
-  return h;
 }
 
 bool read_file(const fs::path& path, std::string& out, size_t limit) {
@@ -212,7 +207,7 @@ class Writer {
           if (ec || rel.empty() || *rel.begin() == "..") rel.clear();
         }
         if (rel.empty())
-          rel = fs::path("other") / fmt::format("{:016x}", fnv1a(fs::absolute(file, ec).string())) / fs::path(file).filename();
+          rel = fs::path("other") / hex64(fnv1a64(fs::absolute(file, ec).string())) / fs::path(file).filename();
         rel = fs::path("sources") / (rel.string() + ".txt");
         fs::create_directories((dir_ / rel).parent_path(), ec);
         fs::copy_file(file, dir_ / rel, fs::copy_options::overwrite_existing, ec);

@@ -1,5 +1,7 @@
 #include "run/ProgramArtefacts.h"
 
+#include "core/Fnv1a.h"
+
 #include <filesystem>
 #include <fstream>
 
@@ -19,15 +21,7 @@ Result<void> write_text(const std::string& path, const std::string& text) {
 
 }  // namespace
 
-std::string spirv_hash(const std::vector<uint32_t>& spirv) {
-  uint64_t h = 0xcbf29ce484222325ull;
-  for (uint32_t word : spirv)
-    for (int b = 0; b < 4; ++b) {
-      h ^= (word >> (8 * b)) & 0xff;
-      h *= 0x100000001b3ull;
-    }
-  return fmt::format("{:016x}", h);
-}
+std::string spirv_hash(const std::vector<uint32_t>& spirv) { return hex64(fnv1a64(spirv)); }
 
 Result<void> write_program_artefacts(const std::string& dir, const CompiledProgram& p, CellArtefacts& out) {
   std::error_code ec;

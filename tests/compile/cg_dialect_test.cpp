@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "TempDir.h"
 #include "compile/CgDialect.h"
 #include "compile/Compiler.h"
 
@@ -36,30 +37,7 @@ const UniformMember* find_member(const Reflection& r, const std::string& name) {
   return nullptr;
 }
 
-// A private directory for files that #include each other.
-class TempDir {
- public:
-  TempDir() {
-    static std::atomic<int> counter{0};
-    path_ = fs::temp_directory_path() /
-            ("shaderbed_cg_test_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  std::string write(const std::string& name, const std::string& text) const {
-    const fs::path p = path_ / name;
-    fs::create_directories(p.parent_path());
-    std::ofstream(p, std::ios::binary) << text;
-    return p.string();
-  }
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
+using test::TempDir;
 
 // The location of the stage variable whose SPIR-V name is `name` (from the disassembly).
 int location_of(const std::vector<uint32_t>& spirv, const std::string& name) {

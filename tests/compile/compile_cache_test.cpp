@@ -18,6 +18,7 @@
 
 #include <gtest/gtest.h>
 
+#include "TempDir.h"
 #include "compile/CompileCache.h"
 #include "compile/Compiler.h"
 #include "compile/GlslangFrontEnd.h"
@@ -33,30 +34,7 @@ namespace fs = std::filesystem;
 
 const fs::path kShaders = fs::path(SHADERBED_SOURCE_DIR) / "shaders";
 
-class TempDir {
- public:
-  TempDir() {
-    static std::atomic<int> counter{0};
-    path_ = fs::temp_directory_path() /
-            ("shaderbed_compile_cache_test_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  std::string write(const std::string& name, const std::string& text) const {
-    const fs::path p = path_ / name;
-    fs::create_directories(p.parent_path());
-    std::ofstream(p, std::ios::binary) << text;
-    return p.string();
-  }
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
+using test::TempDir;
 
 // Every file in a folder (entries and anything a writer left behind).
 std::vector<fs::path> files_in(const fs::path& dir) {

@@ -20,6 +20,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "TempDir.h"
 #include "ShellCommand.h"
 #include "backends/MesaEnvironment.h"
 #include "core/CacheSettings.h"
@@ -30,25 +31,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class TempDir {
- public:
-  TempDir() {
-    static std::atomic<int> counter{0};
-    path_ = fs::temp_directory_path() /
-            ("shaderbed_cache_test_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  const fs::path& path() const { return path_; }
-  std::string operator/(const std::string& leaf) const { return (path_ / leaf).string(); }
-
- private:
-  fs::path path_;
-};
+using test::TempDir;
 
 // The CLI with SHADERBED_CACHE_DIR = `cache_root` and no Mesa cache variables of ours
 // or the user's: the binary decides. Returns the exit status and stdout+stderr.
