@@ -46,11 +46,19 @@ struct Lights {
   glm::dvec3 position{0, 50, 0};     // point light position (w = 1)
 };
 
+// Which light the directional-light models (lambert ... cook_torrance) use: their own
+// directional light by default; `point` gives them L = normalize(light_position - P)
+// instead (the book's Ch. 2 lights are point lights). The point-light models
+// (point_attenuated, spot, warn) always use the point light: `directional` is an error.
+enum class SceneLight { model_default, directional, point };
+
 struct Scene {
   Mesh mesh;
   glm::dmat4 world{1.0};             // object -> world
   Camera camera;
   Lights lights;
+  SceneLight light = SceneLight::model_default;
+  glm::dvec3 ambient{0.0};           // ambient light colour, added to every model's output
   int width = 256;
   int height = 256;
 };

@@ -6,6 +6,7 @@
 #include "reference/ModelRegistry.h"
 #include "reference/ObjectSpace.h"
 #include "reference/Rasteriser.h"
+#include "reference/SceneLighting.h"
 #include "reference/Reference.h"
 
 namespace reference {
@@ -67,7 +68,9 @@ glm::dvec3 shade_pixel(const Mesh& mesh, const std::array<uint32_t, 3>& corners,
 
 std::expected<Framebuffer, std::string> render(const Scene& scene, const std::string& model_name, Mode mode,
                                                const Params& params) {
-  auto model = make_model(model_name, params);
+  auto built = make_model(model_name, params);
+  if (!built) return std::unexpected(built.error());
+  auto model = with_scene_lighting(std::move(*built), model_name, scene.light, scene.ambient);
   if (!model) return std::unexpected(model.error());
   if (auto valid = check_scene(scene); !valid) return std::unexpected(valid.error());
 

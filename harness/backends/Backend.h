@@ -8,6 +8,8 @@
 #include <string_view>
 #include <vector>
 
+#include "backends/SamplerSettings.h"
+#include "backends/RenderState.h"
 #include "backends/UniformPacking.h"
 #include "compile/ShaderModule.h"
 #include "core/Error.h"
@@ -24,14 +26,30 @@ enum class ShaderPath {
 };
 const char* to_string(ShaderPath);
 
-// A lookup texture the harness generated on the CPU (the role of D3DXFillTextureTX):
-// single-channel 32-bit float, sampled with linear filtering (bilinear / trilinear, no
-// mipmaps) and clamp-to-edge addressing, as the book's LUT shaders assume.
+// How a texture's texels are stored on the device. Every format is read as float RGBA
+// by the shader; the 8-bit ones are unsigned normalised, sRGB decoded to linear.
+enum class TexelFormat { r32_float, rgba32_float, rgba8_unorm, rgba8_srgb };
+inline uint32_t channels(TexelFormat f) { return f == TexelFormat::r32_float ? 1 : 4; }
+const char* to_string(TexelFormat);
+
+// A texture of the draw. Either a lookup texture the harness generated on the CPU (the
+// role of D3DXFillTextureTX: single-channel 32-bit float, sampled as the book's LUT
+// shaders assume, see SamplerSettings' defaults) or an image file a case binds
+// (run/TextureFiles.h: RGBA, float or 8-bit, 2D or cube, with mip levels).
 struct Texture {
   std::string name;              // what case bindings call it, e.g. "lut"
   uint32_t dimensions = 2;       // 1, 2 or 3
   uint32_t width = 1, height = 1, depth = 1;
-  std::vector<float> texels;     // R32F, x fastest, then y, then z
+  // Level 0: channels(format) floats per texel, x fastest, then y, then z; a cube map's
+  // six faces (+X, -X, +Y, -Y, +Z, -Z) follow each other. 8-bit formats hold the stored
+  // value / 255 (sRGB still encoded), so the upload is exact.
+  std::vector<float> texels;
+  TexelFormat format = TexelFormat::r32_float;
+  bool cube = false;             // dimensions 2, depth 1, six square faces
+  // Levels 1..n, each max(1, previous / 2) on every axis, laid out as level 0. Filled
+  // from the file's own levels or generated on the CPU (so every backend samples the
+  // same texels); empty: the texture has one level.
+  std::vector<std::vector<float>> mip_levels;
 };
 
 // Maps a sampler the shader declares (reflection name) to one of the job's textures;
@@ -39,7 +57,11 @@ struct Texture {
 class TextureResolver {
  public:
   virtual ~TextureResolver() = default;
+  // For combined samplers and separate images (SamplerKind::combined, image).
   virtual Result<const Texture*> texture(const SamplerBinding& sampler) const = 0;
+  // For combined samplers and separate sampler states (SamplerKind::combined, sampler):
+  // filtering, addressing, border colour. Default: the LUTs' (SamplerSettings{}).
+  virtual Result<SamplerSettings> settings(const SamplerBinding&) const { return SamplerSettings{}; }
 };
 
 // How to time the draw on the device: `warmup` untimed repeats, then `runs` repeats
@@ -59,6 +81,11 @@ struct DrawJob {
   int height = 256;
   const TextureResolver* textures = nullptr;   // null: the program must declare no samplers
   TimingRequest timing{};
+  // Culling, depth, blending, fill (a DX9 effect pass's states; the default is shaderbed's).
+  RenderState render_state{};
+  // The case's [attributes.<language>] map of vertex inputs to mesh streams (null: none;
+  // backends/VertexInputs.h).
+  const AttributeTable* attributes = nullptr;
 };
 
 struct RenderTimings {
@@ -92,8 +119,8 @@ class Backend {
 
 // The exact bytes a backend consumes for `program` along `path` (SPIR-V words or GLSL
 // text of both stages, with entry points): equal keys mean the same pipeline, so
-// backends key their pipeline caches with it.
-std::string program_key(const CompiledProgram& program, ShaderPath path);
+// backends key their pipeline caches with it. The render state is part of a pipeline.
+std::string program_key(const CompiledProgram& program, ShaderPath path, const RenderState& state = {});
 
 // Factories; an error when the driver is not available (e.g. no lavapipe ICD).
 Result<std::unique_ptr<Backend>> make_vulkan_backend();

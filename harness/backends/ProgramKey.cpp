@@ -35,10 +35,11 @@ void append(std::string& key, const ShaderModule& module) {
 
 }  // namespace
 
-std::string program_key(const CompiledProgram& program, ShaderPath path) {
+std::string program_key(const CompiledProgram& program, ShaderPath path, const RenderState& state) {
   // Full content rather than a hash: a cache hit must never be a collision.
   std::string key = to_string(path);
   key += '|';
+  append(key, describe(state));
   switch (path) {
     case ShaderPath::spirv:
       // One key per target: Vulkan draws the Vulkan modules, GL the GL-target ones; a

@@ -6,8 +6,6 @@
 #include <optional>
 #include <string>
 
-#include "scene/Mesh.h"
-
 namespace shaderbed {
 namespace {
 
@@ -16,11 +14,11 @@ std::string lower(std::string s) {
   return s;
 }
 
-// "InVertex.Position" -> "position"; "in_normal", "aNormal", "attrTexCoord" -> the attribute word.
+// "InVertex.Position" -> "position"; "in_normal", "aNormal", "aPos", "attrTexCoord" -> the attribute word.
 std::string attribute_word(std::string name) {
   if (auto dot = name.rfind('.'); dot != std::string::npos) name = name.substr(dot + 1);
   std::string l = lower(name);
-  for (const char* prefix : {"attr_", "attr", "in_", "a_", "v_", "i_", "in"}) {
+  for (const char* prefix : {"attr_", "attr", "in_", "a_", "v_", "i_", "in", "a"}) {
     std::string p = prefix;
     if (l.size() > p.size() && l.starts_with(p)) {
       // Only strip a bare prefix when what follows starts a new word (inNormal, aNormal).
@@ -34,21 +32,41 @@ std::string attribute_word(std::string name) {
   return l;
 }
 
+// The legacy-GLSL dialect's inputs keep their built-in names (gl_Vertex, ...; compile/LegacyGlsl.h).
 std::optional<AttributeStream> from_word(const std::string& w) {
-  if (w == "position" || w == "pos" || w == "vertex")
+  if (w == "position" || w == "pos" || w == "vertex" || w == "gl_vertex")
     return AttributeStream{VertexAttribute::position, offsetof(Vertex, position), 3};
-  if (w == "normal" || w == "norm")
+  if (w == "normal" || w == "norm" || w == "gl_normal")
     return AttributeStream{VertexAttribute::normal, offsetof(Vertex, normal), 3};
   if (w == "tangent")
     return AttributeStream{VertexAttribute::tangent, offsetof(Vertex, tangent), 3};
-  if (w == "texcoord" || w == "texcoord0" || w == "uv" || w == "texcoords")
+  if (w == "texcoord" || w == "texcoord0" || w == "uv" || w == "texcoords" || w == "gl_multitexcoord0")
     return AttributeStream{VertexAttribute::texcoord, offsetof(Vertex, uv), 2};
+  if (w == "color" || w == "colour" || w == "color0" || w == "colour0" || w == "gl_color")
+    return AttributeStream{VertexAttribute::color, offsetof(Vertex, color), 4};
   return std::nullopt;
+}
+
+const std::string* mapped_word(const StageInput& input, const AttributeTable* map) {
+  if (!map) return nullptr;
+  for (const std::string& key : {input.name, "location " + std::to_string(input.location)})
+    if (auto it = map->find(key); it != map->end()) return &it->second;
+  return nullptr;
+}
+
+std::string describe(const StageInput& input) {
+  return "'" + input.name + "'" + (input.semantic.empty() ? "" : " (" + input.semantic + ")") + " at location " +
+         std::to_string(input.location);
 }
 
 }  // namespace
 
-Result<AttributeStream> attribute_stream_for(const StageInput& input) {
+Result<AttributeStream> attribute_stream_for(const StageInput& input, const AttributeTable* map) {
+  if (const std::string* word = mapped_word(input, map)) {
+    if (auto a = from_word(*word)) return *a;
+    return fail("bind", "vertex input " + describe(input) + " is mapped to '" + *word +
+                            "', which is not a mesh attribute (position, normal, tangent, texcoord, color)");
+  }
   if (!input.semantic.empty()) {
     std::string s = lower(input.semantic);
     if (s == "position0" || s == "sv_position") s = "position";   // POSITION is #defined to SV_Position
@@ -57,11 +75,36 @@ Result<AttributeStream> attribute_stream_for(const StageInput& input) {
     if (auto a = from_word(s)) return *a;
   }
   if (auto a = from_word(attribute_word(input.name))) return *a;
-  return fail("bind", "vertex input '" + input.name + "'" +
-                          (input.semantic.empty() ? "" : " (" + input.semantic + ")") +
-                          " at location " + std::to_string(input.location) +
-                          " is not a mesh attribute; use POSITION, NORMAL, TANGENT or TEXCOORD0 "
-                          "(GLSL: position, normal, tangent, texcoord)");
+  return fail("bind", "vertex input " + describe(input) +
+                          " is not a mesh attribute; use POSITION, NORMAL, TANGENT, TEXCOORD0 or COLOR "
+                          "(GLSL: position, normal, tangent, texcoord, color)");
+}
+
+Result<std::vector<AttributeStream>> attribute_streams_for(const std::vector<StageInput>& inputs,
+                                                           const AttributeTable* map, Language language) {
+  std::vector<AttributeStream> streams;
+  std::vector<std::string> unmatched;
+  const StageInput* first = nullptr;
+  for (const StageInput& input : inputs) {
+    auto stream = attribute_stream_for(input, map);
+    if (stream) {
+      streams.push_back(*stream);
+    } else if (mapped_word(input, map)) {
+      return std::unexpected(stream.error());   // a bad map entry says so itself
+    } else {
+      unmatched.push_back(describe(input));
+      if (!first) first = &input;
+    }
+  }
+  if (unmatched.empty()) return streams;
+  std::string list;
+  for (size_t i = 0; i < unmatched.size(); ++i) list += (i ? ", " : "") + unmatched[i];
+  const std::string lang = to_string(language);
+  return fail("bind", std::string(unmatched.size() == 1 ? "vertex input " : "vertex inputs ") + list +
+                          (unmatched.size() == 1 ? " is not a mesh attribute" : " are not mesh attributes") +
+                          "; map each in the case under [attributes." + lang + "], by name or location (" +
+                          first->name + " = \"normal\" or \"location " + std::to_string(first->location) +
+                          "\" = \"normal\"; attributes: position, normal, tangent, texcoord, color)");
 }
 
 }  // namespace shaderbed

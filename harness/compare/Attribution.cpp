@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -79,9 +81,70 @@ const char* to_string(Attribution a) {
     case Attribution::cross_compiler: return "cross-compiler";
     case Attribution::driver: return "driver";
     case Attribution::model_reference: return "model/reference";
+    case Attribution::matrix_convention: return "matrix convention";
     case Attribution::unclear: return "unclear";
   }
   return "unclear";
+}
+
+namespace {
+
+// Intersection over union of the render's coverage and the reference's, with the
+// reference's pixel (x, y) read at map(x, y).
+template <typename Map>
+double coverage_overlap(const Image& render, const ReferenceImage& reference, Map map) {
+  size_t both = 0, either = 0;
+  for (int y = 0; y < reference.height; ++y)
+    for (int x = 0; x < reference.width; ++x) {
+      const auto [rx, ry] = map(x, y);
+      const bool drawn = render.coverage[size_t(y) * reference.width + x] != 0;
+      const bool covered = reference.coverage[size_t(ry) * reference.width + rx] != 0;
+      both += drawn && covered;
+      either += drawn || covered;
+    }
+  return either ? double(both) / double(either) : 1.0;
+}
+
+constexpr const char* kMatrixCause =
+    "the likely cause is the matrix convention: a row-vector shader (mul(v, M)) given a column-vector matrix "
+    "(bind it as { value = \"...\", layout = \"row_vector\" }) or the reverse, a transposed matrix, or a missing "
+    "(unbound or zero) one";
+
+}  // namespace
+
+std::string coverage_geometry_evidence(const Image& render, const ReferenceImage& reference) {
+  const size_t pixels = size_t(reference.width) * reference.height;
+  if (render.coverage.size() != pixels || reference.coverage.size() != pixels || pixels == 0) return "";
+  size_t drawn = 0, covered = 0;
+  for (size_t i = 0; i < pixels; ++i) {
+    drawn += render.coverage[i] != 0;
+    covered += reference.coverage[i] != 0;
+  }
+  if (covered == 0) return "";
+  if (drawn == 0) return fmt::format("blank: the render draws nothing where the reference covers {} px; {}", covered, kMatrixCause);
+  const int w = reference.width, h = reference.height;
+  const double direct = coverage_overlap(render, reference, [](int x, int y) { return std::pair{x, y}; });
+  if (direct >= 0.5) return "";
+  struct Candidate {
+    const char* how;
+    double overlap;
+  };
+  std::vector<Candidate> candidates{
+      {"mirrored left-right", coverage_overlap(render, reference, [&](int x, int y) { return std::pair{w - 1 - x, y}; })},
+      {"mirrored top-bottom", coverage_overlap(render, reference, [&](int x, int y) { return std::pair{x, h - 1 - y}; })},
+      {"rotated by 180 degrees", coverage_overlap(render, reference, [&](int x, int y) {
+         return std::pair{w - 1 - x, h - 1 - y};
+       })}};
+  if (w == h)
+    candidates.push_back({"transposed", coverage_overlap(render, reference, [](int x, int y) { return std::pair{y, x}; })});
+  const auto best = std::max_element(candidates.begin(), candidates.end(),
+                                     [](const Candidate& a, const Candidate& b) { return a.overlap < b.overlap; });
+  if (best->overlap < 0.8)
+    return fmt::format("the render covers {} px where the reference covers {} px, overlapping only {:.0f}%: the "
+                       "geometry is misplaced; {}",
+                       drawn, covered, 100 * direct, kMatrixCause);
+  return fmt::format("the render covers the reference's area {} (overlap {:.0f}% that way, {:.0f}% as drawn); {}",
+                     best->how, 100 * best->overlap, 100 * direct, kMatrixCause);
 }
 
 double renders_max_difference(std::span<const Image* const> images, const std::vector<PixelClass>& classes) {
@@ -111,8 +174,34 @@ double renders_max_difference(std::span<const Image* const> images, const std::v
   return worst;
 }
 
+namespace {
+
+std::vector<Verdict> stage_verdicts(std::span<const RenderOutcome> renders, const ReferenceImage& reference,
+                                    const ComparisonThresholds& t, double expected_area);
+
+}  // namespace
+
 std::vector<Verdict> attribute_failures(std::span<const RenderOutcome> renders, const ReferenceImage& reference,
                                         const ComparisonThresholds& t, double expected_area) {
+  std::vector<Verdict> verdicts = stage_verdicts(renders, reference, t, expected_area);
+  for (size_t i = 0; i < renders.size() && i < verdicts.size(); ++i) {
+    if (renders[i].pass || !renders[i].image) continue;
+    const std::string evidence = coverage_geometry_evidence(*renders[i].image, reference);
+    if (evidence.empty()) continue;
+    Verdict& v = verdicts[i];
+    if (v.attribution == Attribution::unclear || v.attribution == Attribution::model_reference) {
+      v = {Attribution::matrix_convention, evidence + (v.reason.empty() ? "" : " (" + v.reason + ")")};
+    } else {
+      v.reason += "; " + evidence;
+    }
+  }
+  return verdicts;
+}
+
+namespace {
+
+std::vector<Verdict> stage_verdicts(std::span<const RenderOutcome> renders, const ReferenceImage& reference,
+                                    const ComparisonThresholds& t, double expected_area) {
   std::vector<Verdict> verdicts(renders.size());
   if (std::all_of(renders.begin(), renders.end(), [](const RenderOutcome& r) { return r.pass; })) return verdicts;
   const std::vector<PixelClass> classes = classify_pixels(reference);
@@ -236,4 +325,5 @@ std::vector<Verdict> attribute_failures(std::span<const RenderOutcome> renders, 
   return verdicts;
 }
 
+}  // namespace
 }  // namespace shaderbed

@@ -18,6 +18,12 @@
 //  - "driver": every render of L on some other backend passes (the same shaders work
 //    elsewhere), so B's handling of them differs from the others and from the reference.
 //  - "unclear": none of these.
+// Then, whatever the stage: when a failing render is blank where the reference covers
+// pixels, covers the reference's area mirrored (left-right, top-bottom, both) or
+// transposed, or overlaps it by less than half (intersection over union), its reason says so and names the matrix convention (a row-vector shader
+// given a column-vector matrix, a transposed or missing matrix) as the likely cause;
+// an "unclear" or "model/reference" verdict becomes "matrix convention" (the
+// reference's coverage is the mesh's, so the model is not at fault there).
 #include <span>
 #include <string>
 #include <vector>
@@ -27,10 +33,10 @@
 
 namespace shaderbed {
 
-enum class Attribution { none, front_end, cross_compiler, driver, model_reference, unclear };
+enum class Attribution { none, front_end, cross_compiler, driver, model_reference, matrix_convention, unclear };
 
-// "", "front end", "cross-compiler", "driver", "model/reference", "unclear" (the strings
-// CellResult::attribution holds).
+// "", "front end", "cross-compiler", "driver", "model/reference", "matrix convention",
+// "unclear" (the strings CellResult::attribution holds).
 const char* to_string(Attribution);
 
 // One render of the group. Pass only renders that were compared ("pass" or "fail");
@@ -52,6 +58,11 @@ struct Verdict {
 // `expected_area` as for compare_images (<= 0: not used).
 std::vector<Verdict> attribute_failures(std::span<const RenderOutcome> renders, const ReferenceImage& reference,
                                         const ComparisonThresholds& thresholds, double expected_area = 0);
+
+// How a render's coverage is wrong in a way that points at its matrices, or "" when it
+// is not: "blank: ...", "covers the reference's area mirrored left-right ..." or "... the
+// geometry is misplaced", each naming the matrix convention as the likely cause.
+std::string coverage_geometry_evidence(const Image& render, const ReferenceImage& reference);
 
 // The largest difference between the renders, pairwise, over the reference's interior
 // pixels: max over pixels and RGB channels of (max - min across renders); +inf where

@@ -1,8 +1,11 @@
 #include "compile/Compiler.h"
 
 #include <fstream>
+#include <map>
 #include <sstream>
 
+#include "compile/EffectFrontEnd.h"
+#include "compile/GlslDialect.h"
 #include "compile/GlslangFrontEnd.h"
 #include "compile/SpirvReflection.h"
 #include "compile/SpirvTools.h"
@@ -45,9 +48,28 @@ Result<ShaderModule> compile_stage(Language language, const ShaderSource& source
                       .reflection = std::move(*reflection)};
 }
 
-Result<CompiledProgram> compile_program(const ProgramSource& p, bool with_opengl) {
+Result<CompiledProgram> compile_program(const ProgramSource& source, bool with_opengl) {
   CompiledProgram out;
-  out.language = p.language;
+  out.language = source.language;
+  // A DX9 effect becomes plain HLSL per stage (EffectFrontEnd.h); its pass's render
+  // states and sampler_state settings travel with the program to the draw.
+  Result<ProgramSource> rewritten = source;
+  if (source.language == Language::hlsl)
+    rewritten = prepare_effect_program(source, out.render_state, out.sampler_settings);
+  if (!rewritten) return std::unexpected(rewritten.error());
+  // GLSL written for GL (legacy built-ins, varyings matched by name) becomes GLSL that
+  // glslang compiles and links by location (GlslDialect.h); the native GL path keeps the
+  // author's text.
+  std::map<std::string, std::string> legacy_names;
+  if (source.language == Language::glsl) {
+    auto glsl = prepare_glsl_program(source);
+    if (!glsl) return std::unexpected(glsl.error());
+    legacy_names = std::move(glsl->legacy_names);
+    out.native_glsl_compatibility = glsl->compatibility;
+    out.native_glsl_skip_reason = std::move(glsl->native_skip_reason);
+    rewritten = std::move(glsl->program);
+  }
+  const ProgramSource& p = *rewritten;
   struct Job {
     const ShaderSource& src;
     Target target;
@@ -55,12 +77,19 @@ Result<CompiledProgram> compile_program(const ProgramSource& p, bool with_opengl
   };
   for (Job job : {Job{p.vertex, Target::vulkan, out.vertex}, Job{p.fragment, Target::vulkan, out.fragment},
                   Job{p.vertex, Target::opengl, out.vertex_gl}, Job{p.fragment, Target::opengl, out.fragment_gl}}) {
-    if (job.target == Target::opengl && !with_opengl) continue;
+    if (job.target == Target::opengl && (!with_opengl || !out.opengl_skip_reason.empty())) continue;
     auto module = compile_stage_cached(p.language, job.src, job.target);
+    // Vulkan GLSL the OpenGL target cannot take (push constants): the GL paths do not
+    // apply, and the Vulkan one still runs.
+    if (!module && job.target == Target::opengl && !out.native_glsl_skip_reason.empty()) {
+      out.opengl_skip_reason = "Vulkan GLSL: the GL SPIR-V paths do not apply (" + module.error().to_string() + ")";
+      continue;
+    }
     if (!module) return std::unexpected(module.error());
     job.dst = std::move(*module);
+    restore_legacy_names(job.dst.reflection, legacy_names);
   }
-  if (!with_opengl) return out;
+  if (!with_opengl || !out.opengl_skip_reason.empty()) return out;
   auto vs = spirv_to_glsl_cached(out.vertex_gl.spirv, Stage::vertex);
   if (!vs) return std::unexpected(std::move(vs.error()).in_file(p.vertex.path));
   auto fs = spirv_to_glsl_cached(out.fragment_gl.spirv, Stage::fragment);
@@ -68,8 +97,8 @@ Result<CompiledProgram> compile_program(const ProgramSource& p, bool with_opengl
   out.vertex_cross_glsl = std::move(*vs);
   out.fragment_cross_glsl = std::move(*fs);
   if (p.language == Language::glsl) {
-    out.vertex_native_glsl = p.vertex.text;
-    out.fragment_native_glsl = p.fragment.text;
+    out.vertex_native_glsl = source.vertex.text;
+    out.fragment_native_glsl = source.fragment.text;
   }
   return out;
 }

@@ -26,10 +26,20 @@ struct SourceFile {
   bool operator==(const SourceFile&) const = default;
 };
 
+// A DX9 effect's technique and pass ("" = the first), and where the case names them,
+// for the error when the effect has no such technique or pass (compile/EffectFrontEnd.h).
+struct EffectChoice {
+  std::string technique;
+  std::string pass;
+  std::string named_in;  // the case file
+  int line = 0;
+};
+
 struct ProgramSource {
   Language language = Language::glsl;
   ShaderSource vertex;
   ShaderSource fragment;
+  EffectChoice effect;   // used when a stage's file is an effect (.fx, or technique blocks)
 };
 
 // Reads a file into a ShaderSource (error with the path when it cannot be read).

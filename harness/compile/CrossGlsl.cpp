@@ -1,5 +1,7 @@
 #include "compile/CrossGlsl.h"
 
+#include <map>
+
 #include <spirv_cross/spirv_glsl.hpp>
 
 namespace shaderbed {
@@ -32,6 +34,22 @@ Result<std::string> spirv_to_glsl(const std::vector<uint32_t>& spirv, Stage stag
       if (type_name.empty() || type_name[0] == '$') type_name = "Globals";
       glsl.set_name(ub.base_type_id, type_name + suffix);
       glsl.set_name(ub.id, "u" + std::string(suffix));
+    }
+    // GLSL has no separate texture and sampler objects: HLSL's Texture2D + SamplerState
+    // pair becomes one sampler2D, named and bound as the texture (what the case binds;
+    // the sampler state's settings reach it through the texture, see CaseTextures).
+    if (!res.separate_images.empty() || !res.separate_samplers.empty()) {
+      glsl.build_combined_image_samplers();
+      std::map<uint32_t, int> uses_of_image;
+      for (const spirv_cross::CombinedImageSampler& pair : glsl.get_combined_image_samplers())
+        ++uses_of_image[pair.image_id];
+      for (const spirv_cross::CombinedImageSampler& pair : glsl.get_combined_image_samplers()) {
+        std::string name = glsl.get_name(pair.image_id);
+        if (uses_of_image[pair.image_id] > 1) name += "_" + glsl.get_name(pair.sampler_id);
+        glsl.set_name(pair.combined_id, name);
+        glsl.set_decoration(pair.combined_id, spv::DecorationBinding,
+                            glsl.get_decoration(pair.image_id, spv::DecorationBinding));
+      }
     }
     return glsl.compile();
   } catch (const std::exception& e) {

@@ -11,7 +11,9 @@
 #include <glslang/SPIRV/GlslangToSpv.h>
 
 #include "compile/CgFrontEnd.h"
+#include "compile/GlslProfile.h"
 #include "compile/HlslGuards.h"
+#include "compile/HlslIncluder.h"
 
 namespace shaderbed {
 namespace {
@@ -36,6 +38,23 @@ constexpr const char* kHlslPreamble =
     "#define POSITION SV_Position\n"
     "#define SHADERBED 1\n";
 
+// Loose uniforms' block per stage: vertex and fragment blocks must not share a binding
+// (GL has one namespace for all stages), and authors' own blocks start from 0.
+constexpr unsigned kGlslDefaultBlockBinding = 14;
+
+void relax_vulkan_rules(glslang::TShader& shader, Stage stage) {
+  shader.setEnvInputVulkanRulesRelaxed();
+  shader.setGlobalUniformSet(0);
+  shader.setGlobalUniformBinding(kGlslDefaultBlockBinding + (stage == Stage::fragment ? 1 : 0));
+}
+
+// glslang's #version messages carry no line: give them the directive's.
+void place_version_error(Error& e, const std::string& text) {
+  if (e.line != 0 || !e.message.starts_with("#version")) return;
+  const GlslVersion version = glsl_version(text);
+  if (version.declared) e.line = version.line;
+}
+
 std::string missing_entry_message(const ShaderSource& source) {
   return std::string("no ") + to_string(source.stage) + " entry point '" + source.entry_point +
          "' in this file (the case's " + to_string(source.stage) + "_entry names it; default main)";
@@ -44,12 +63,19 @@ std::string missing_entry_message(const ShaderSource& source) {
 }  // namespace
 
 // glslang's info log: "ERROR: file:LINE: message" (possibly several). Take the first
-// error and keep the rest in the message so nothing is lost.
+// error and keep the rest in the message so nothing is lost. An error without a place
+// comes first when it is the cause (glslang's "#version: ..." message), so it is kept.
 Error glslang_log_error(const std::string& log, const std::string& path, const char* what) {
   static const std::regex first_error(R"((?:ERROR|error): ([^:\n]*):(\d+): ([^\n]*))");
+  static const std::regex unplaced_error(R"((?:^|\n)ERROR: (#[^\n]*))");
   Error e{.message = std::string(what) + " failed", .file = path, .stage = "compile"};
   std::smatch m;
-  if (std::regex_search(log, m, first_error)) {
+  if (std::regex_search(log, m, unplaced_error)) {
+    e.message = m[1].str();
+    const auto located = std::sregex_iterator(log.begin(), log.end(), first_error);
+    const auto others = std::distance(located, std::sregex_iterator());
+    if (others > 0) e.message += " (+" + std::to_string(others) + " more errors)";
+  } else if (std::regex_search(log, m, first_error)) {
     if (!m[1].str().empty()) e.file = m[1].str();   // an included file, or a #line marker's
     e.line = std::stoi(m[2].str());
     e.message = m[3].str();
@@ -93,16 +119,22 @@ Result<std::vector<uint32_t>> glslang_to_spirv(Language language, const ShaderSo
   shader.setEntryPoint(source.entry_point.c_str());
   shader.setSourceEntryPoint(source.entry_point.c_str());
 
-  const glslang::EShClient client = target == Target::vulkan ? glslang::EShClientVulkan : glslang::EShClientOpenGL;
+  // GLSL written for GL declares loose uniforms (`uniform mat4 model;`): glslang's relaxed
+  // Vulkan rules gather them into one block per stage (gl_DefaultUniformBlock), bound like
+  // any other block. The GL target takes the same rules (its SPIR-V is valid for both).
+  const bool relaxed = language == Language::glsl && needs_relaxed_vulkan_rules(source_text);
+  const bool vulkan_rules = target == Target::vulkan || relaxed;
+  const glslang::EShClient client = vulkan_rules ? glslang::EShClientVulkan : glslang::EShClientOpenGL;
   shader.setEnvInput(hlsl ? glslang::EShSourceHlsl : glslang::EShSourceGlsl, stage, client, 100);
-  if (target == Target::vulkan)
+  if (relaxed) relax_vulkan_rules(shader, source.stage);
+  if (vulkan_rules)
     shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_0);
   else
     shader.setEnvClient(glslang::EShClientOpenGL, glslang::EShTargetOpenGL_450);
   shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
 
   int messages = EShMsgSpvRules;
-  if (target == Target::vulkan) messages |= EShMsgVulkanRules;
+  if (vulkan_rules) messages |= EShMsgVulkanRules;
   if (hlsl) {
     messages |= EShMsgReadHlsl | EShMsgHlslOffsets | EShMsgHlslDX9Compatible | EShMsgHlslLegalization;
     shader.setPreamble(cg ? cg->preamble.c_str() : kHlslPreamble);
@@ -121,13 +153,38 @@ Result<std::vector<uint32_t>> glslang_to_spirv(Language language, const ShaderSo
                      glslang::EResSsbo, glslang::EResUav})
       shader.setShiftBinding(res, kFragmentBindingBase);
   }
+  // SM4+ numbers cbuffers (bN), textures (tN) and sampler states (sN) in separate register
+  // spaces, so b0, t0 and s0 must not land on one binding: each type gets its own range
+  // per stage (glslang counts DX9's sampler2D as a texture).
+  if (hlsl) {
+    const unsigned base = source.stage == Stage::fragment ? kFragmentBindingBase : 0;
+    shader.setShiftBinding(glslang::EResTexture, base + kTextureBindingOffset);
+    shader.setShiftBinding(glslang::EResSampler, base + kSamplerStateBindingOffset);
+  }
   // GL-target SPIR-V gives loose uniforms (samplers) locations, counted from 0 in each
   // stage: a program sampling in both stages would collide, so fragments start at 64.
   if (target == Target::opengl && source.stage == Stage::fragment) shader.setUniformLocationBase(64);
+  // GL_ARB_gl_spirv has no separate samplers: an SM4 Texture2D sampled with a
+  // SamplerState becomes one sampler2D named after the texture (the Vulkan target keeps
+  // both; CaseTextures gives the texture its sampler state's settings).
+  if (hlsl && target == Target::opengl)
+    shader.setTextureSamplerTransformMode(EShTexSampTransUpgradeTextureRemoveSampler);
 
   const auto msgs = static_cast<EShMessages>(messages);
-  if (!shader.parse(GetDefaultResources(), 100, false, msgs))
-    return std::unexpected(glslang_log_error(shader.getInfoLog(), source.path, "parse"));
+  // HLSL #include, relative to the including file (HlslIncluder.h); the files it reads go
+  // to read_files for the disk cache. Cg's includes were resolved by prepare_cg.
+  std::vector<SourceFile> hlsl_includes;
+  HlslIncluder hlsl_includer(hlsl_includes);
+  glslang::TShader::ForbidIncluder no_includer;
+  glslang::TShader::Includer& includer =
+      language == Language::hlsl ? static_cast<glslang::TShader::Includer&>(hlsl_includer) : no_includer;
+  const bool parsed = shader.parse(GetDefaultResources(), 100, false, msgs, includer);
+  if (read_files) read_files->insert(read_files->end(), hlsl_includes.begin(), hlsl_includes.end());
+  if (!parsed) {
+    Error e = glslang_log_error(shader.getInfoLog(), source.path, "parse");
+    if (language == Language::glsl) place_version_error(e, source_text);
+    return std::unexpected(std::move(e));
+  }
   if (cg)
     if (auto ok = check_cg_ast(shader, source.path); !ok) return std::unexpected(ok.error());
 

@@ -10,6 +10,10 @@ namespace shaderbed {
 // Binding numbers a stage's auto-mapped resources start from. GL has a single binding
 // namespace for all stages, so HLSL vertex and pixel $Global blocks must not collide.
 constexpr unsigned kFragmentBindingBase = 8;
+// HLSL textures and sampler states start this far above their stage's base: the vertex
+// stage's cbuffers take 0.., the fragment's 8.., textures 16.. and 24.., samplers 32.. and 40...
+constexpr unsigned kTextureBindingOffset = 16;
+constexpr unsigned kSamplerStateBindingOffset = 32;
 
 // The first error of a glslang info log ("ERROR: file:LINE: message") as an Error; the
 // file is the one the log names (an #include'd file or a #line marker's), else `path`.

@@ -11,7 +11,7 @@ namespace shaderbed {
 static_assert(sizeof(UniformMember) == 72, "UniformMember changed: update ModuleCodec.cpp");
 static_assert(sizeof(UniformBlock) == 72, "UniformBlock changed: update ModuleCodec.cpp");
 static_assert(sizeof(StageInput) == 80, "StageInput changed: update ModuleCodec.cpp");
-static_assert(sizeof(SamplerBinding) == 48, "SamplerBinding changed: update ModuleCodec.cpp");
+static_assert(sizeof(SamplerBinding) == 80, "SamplerBinding changed: update ModuleCodec.cpp");
 static_assert(sizeof(Reflection) == 72, "Reflection changed: update ModuleCodec.cpp");
 static_assert(sizeof(ShaderModule) == 168, "ShaderModule changed: update ModuleCodec.cpp");
 #endif
@@ -102,6 +102,10 @@ void write_module(ByteWriter& out, const ShaderModule& m) {
     out.u32(x.set);
     out.u32(x.binding);
     out.u32(x.dimensions);
+    out.u32(uint32_t(x.kind));
+    out.boolean(x.cube);
+    out.u64(x.paired.size());
+    for (const std::string& p : x.paired) out.str(p);
   }
 }
 
@@ -131,8 +135,17 @@ bool read_module(ByteReader& in, ShaderModule& m) {
     if (!in.u32(x.location) || !in.str(x.name) || !in.str(x.semantic) || !in.u32(x.components)) return false;
   if (!count(in, n)) return false;
   r.samplers.resize(n);
-  for (SamplerBinding& x : r.samplers)
-    if (!in.str(x.name) || !in.u32(x.set) || !in.u32(x.binding) || !in.u32(x.dimensions)) return false;
+  for (SamplerBinding& x : r.samplers) {
+    uint32_t kind = 0;
+    uint64_t paired = 0;
+    if (!in.str(x.name) || !in.u32(x.set) || !in.u32(x.binding) || !in.u32(x.dimensions) || !in.u32(kind) ||
+        kind > uint32_t(SamplerKind::sampler) || !in.boolean(x.cube) || !count(in, paired))
+      return false;
+    x.kind = SamplerKind(kind);
+    x.paired.resize(paired);
+    for (std::string& p : x.paired)
+      if (!in.str(p)) return false;
+  }
   return in.ok();
 }
 

@@ -3,9 +3,13 @@
 // backends need to bind exactly what the shader asks for (uniform block layouts with
 // offsets, vertex inputs by location, samplers).
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "backends/RenderState.h"
+#include "backends/SamplerSettings.h"
 
 namespace shaderbed {
 
@@ -49,11 +53,25 @@ struct StageInput {
   bool operator==(const StageInput&) const = default;
 };
 
+// What one texture descriptor of a shader is: GLSL's sampler2D and DX9's sampler2D are
+// combined image-samplers; HLSL SM4+ declares the texture (Texture2D) and the sampler
+// state (SamplerState) apart, and the Vulkan target keeps them apart.
+enum class SamplerKind : uint32_t {
+  combined,   // sampler2D: texels and filtering in one descriptor
+  image,      // Texture2D: texels only (OpTypeImage)
+  sampler,    // SamplerState: filtering only (OpTypeSampler)
+};
+
 struct SamplerBinding {
   std::string name;
   uint32_t set = 0;
   uint32_t binding = 0;
-  uint32_t dimensions = 2;      // 1, 2 or 3
+  uint32_t dimensions = 2;      // 1, 2 or 3 (a cube map is 2 with cube = true)
+  SamplerKind kind = SamplerKind::combined;
+  bool cube = false;            // samplerCube / TextureCube
+  // image: the sampler states it is sampled with; sampler: the images it samples
+  // (t.Sample(s, uv) pairs t with s). Empty for combined samplers.
+  std::vector<std::string> paired;
   bool operator==(const SamplerBinding&) const = default;
 };
 
@@ -86,6 +104,18 @@ struct CompiledProgram {
   std::string fragment_cross_glsl;
   std::string vertex_native_glsl;  // the author's GLSL source (language == glsl only)
   std::string fragment_native_glsl;
+  // The author's GLSL is GL-era (compile/GlslProfile.h): Mesa compiles it only in a
+  // compatibility-profile context, with the fixed-function state set from the case.
+  bool native_glsl_compatibility = false;
+  // Why the native GL path does not apply to the author's GLSL (Vulkan GLSL); "" = it does.
+  std::string native_glsl_skip_reason;
+  // Why the GL SPIR-V and SPIRV-Cross paths do not apply (Vulkan GLSL the OpenGL target
+  // rejects, e.g. push constants; the GL modules are then empty); "" = they do.
+  std::string opengl_skip_reason;
+  // A DX9 effect's chosen pass (compile/EffectFrontEnd.h): its render states, and each
+  // sampler_state block's settings by sampler name. Defaults for any other program.
+  RenderState render_state;
+  std::map<std::string, SamplerSettings> sampler_settings;
 };
 
 }  // namespace shaderbed

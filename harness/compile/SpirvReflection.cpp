@@ -63,14 +63,38 @@ Result<Reflection> reflect_spirv(const std::vector<uint32_t>& spirv, Language la
       std::sort(r.inputs.begin(), r.inputs.end(),
                 [](const StageInput& a, const StageInput& b) { return a.location < b.location; });
     }
-    for (const spirv_cross::Resource& s : res.sampled_images) {
+    const auto texture_binding = [&](const spirv_cross::Resource& s, SamplerKind kind) {
       const spirv_cross::SPIRType& t = c.get_type(s.type_id);
       SamplerBinding sb;
       sb.name = s.name;
       sb.set = c.get_decoration(s.id, spv::DecorationDescriptorSet);
       sb.binding = c.get_decoration(s.id, spv::DecorationBinding);
-      sb.dimensions = t.image.dim == spv::Dim1D ? 1 : t.image.dim == spv::Dim3D ? 3 : 2;
-      r.samplers.push_back(std::move(sb));
+      sb.kind = kind;
+      if (kind != SamplerKind::sampler) {
+        sb.dimensions = t.image.dim == spv::Dim1D ? 1 : t.image.dim == spv::Dim3D ? 3 : 2;
+        sb.cube = t.image.dim == spv::DimCube;
+      }
+      return sb;
+    };
+    for (const spirv_cross::Resource& s : res.sampled_images)
+      r.samplers.push_back(texture_binding(s, SamplerKind::combined));
+    const size_t first_separate = r.samplers.size();
+    for (const spirv_cross::Resource& s : res.separate_images)
+      r.samplers.push_back(texture_binding(s, SamplerKind::image));
+    for (const spirv_cross::Resource& s : res.separate_samplers)
+      r.samplers.push_back(texture_binding(s, SamplerKind::sampler));
+    if (r.samplers.size() > first_separate) {
+      // Which texture is sampled with which sampler state: the case names textures, and
+      // a sampler state takes its texture's settings (CaseTextures).
+      c.build_combined_image_samplers();
+      for (const spirv_cross::CombinedImageSampler& pair : c.get_combined_image_samplers()) {
+        const std::string image = c.get_name(pair.image_id), sampler = c.get_name(pair.sampler_id);
+        for (SamplerBinding& sb : r.samplers) {
+          const std::string& partner = sb.kind == SamplerKind::image ? sampler : image;
+          if (sb.kind == SamplerKind::combined || sb.name != (sb.kind == SamplerKind::image ? image : sampler)) continue;
+          if (std::ranges::find(sb.paired, partner) == sb.paired.end()) sb.paired.push_back(partner);
+        }
+      }
     }
     return r;
   } catch (const std::exception& e) {

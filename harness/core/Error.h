@@ -14,6 +14,9 @@ struct Error {
   int column = 0;       // 1-based; 0 = unknown
   std::string stage;    // "compile", "vulkan", "gl", "case", "reference", ...
   std::string backend;  // backend/path the error happened on, if any
+  // Not a fault: the cell's path does not apply to this shader (Vulkan-only GLSL on the
+  // native GL path, say). The runner reports it as status "skipped" with the message.
+  bool skipped = false;
 
   // "file:line:col: stage[backend]: message"
   std::string to_string() const;
@@ -38,6 +41,11 @@ using Result = std::expected<T, Error>;
 
 inline std::unexpected<Error> fail(std::string stage, std::string message) {
   return std::unexpected(Error{.message = std::move(message), .stage = std::move(stage)});
+}
+
+// A path that does not apply, with the reason (status "skipped", never an error).
+inline std::unexpected<Error> skip(std::string stage, std::string reason) {
+  return std::unexpected(Error{.message = std::move(reason), .stage = std::move(stage), .skipped = true});
 }
 
 }  // namespace shaderbed

@@ -43,11 +43,11 @@ const LoadedModule& image_module() {
       }
       // Never dlclosed: OpenImageIO keeps threads and plugins of its own.
       using Entry = const ShaderbedImageIo* (*)();
-      if (auto entry = reinterpret_cast<Entry>(::dlsym(handle, "shaderbed_image_io_v1"))) {
+      if (auto entry = reinterpret_cast<Entry>(::dlsym(handle, "shaderbed_image_io_v2"))) {
         loaded.table = entry();
         return;
       }
-      tried += std::string(tried.empty() ? "" : "; ") + candidate.string() + " has no shaderbed_image_io_v1";
+      tried += std::string(tried.empty() ? "" : "; ") + candidate.string() + " has no shaderbed_image_io_v2";
     }
     loaded.error = "cannot load the image I/O module " + std::string(kModuleName) + ": " + tried;
   });
@@ -85,6 +85,26 @@ Result<ImagePixels> read_image_file(const std::string& path) {
   image.values.assign(pixels, pixels + size_t(image.width) * image.height * image.channels);
   module.table->free_pixels(pixels);
   return image;
+}
+
+Result<ImageFileLevels> read_image_levels(const std::string& path, bool all_levels) {
+  const LoadedModule& module = image_module();
+  if (!module.table) return std::unexpected(image_error(module.error, path));
+  ImageFileLevels file;
+  for (int level = 0, levels = 1; level < (all_levels ? levels : 1); ++level) {
+    std::array<char, 1024> error{};
+    ImagePixels image;
+    float* pixels = nullptr;
+    int eight_bit = 0;
+    if (module.table->read_level(path.c_str(), level, &image.width, &image.height, &image.channels, &levels,
+                                 &eight_bit, &pixels, error.data(), error.size()) != 0)
+      return std::unexpected(image_error(error.data(), path));
+    image.values.assign(pixels, pixels + size_t(image.width) * image.height * image.channels);
+    module.table->free_pixels(pixels);
+    if (level == 0) file.eight_bit = eight_bit != 0;
+    file.levels.push_back(std::move(image));
+  }
+  return file;
 }
 
 }  // namespace shaderbed

@@ -26,4 +26,12 @@ Result<void> write_image_file(const std::string& path, int width, int height, in
 // Reads any format OpenImageIO knows, as float.
 Result<ImagePixels> read_image_file(const std::string& path);
 
+struct ImageFileLevels {
+  bool eight_bit = false;            // the file stores 8-bit unsigned values (each value is n / 255)
+  std::vector<ImagePixels> levels;   // level 0, then the file's own mip levels (all_levels)
+};
+
+// The first image of a file, as float, and with all_levels its mip levels (DDS, tiled EXR).
+Result<ImageFileLevels> read_image_levels(const std::string& path, bool all_levels);
+
 }  // namespace shaderbed

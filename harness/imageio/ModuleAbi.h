@@ -14,8 +14,12 @@ struct ShaderbedImageIo {
   int (*read)(const char* path, int* width, int* height, int* channels, float** pixels, char* error,
               size_t error_size);
   void (*free_pixels)(float* pixels);
+  // v2: one mip level of the file's first subimage, as read does; *levels is how many
+  // the file has, *is_8bit whether it stores 8-bit unsigned values (value / 255 exactly).
+  int (*read_level)(const char* path, int level, int* width, int* height, int* channels, int* levels, int* is_8bit,
+                    float** pixels, char* error, size_t error_size);
 };
 
 // The module's one exported symbol.
-const ShaderbedImageIo* shaderbed_image_io_v1();
+const ShaderbedImageIo* shaderbed_image_io_v2();
 }

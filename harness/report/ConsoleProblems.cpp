@@ -46,9 +46,10 @@ bool print_problems(const RunReport& report, std::FILE* out, bool blank_line_fir
             fmt::print(out, "  {}: {}\n", where(r), r.message.empty() ? "failed" : first_line(r.message));
             fmt::print(out, "      attribution: {}{}\n", r.attribution.empty() ? "none" : r.attribution,
                        r.attribution_reason.empty() ? "" : " - " + r.attribution_reason);
+            if (!r.reference_note.empty()) fmt::print(out, "      reference: {}\n", r.reference_note);
             print_images(r, out);
           });
-  section("errors", [](const CellResult& r) { return r.status != "pass" && r.status != "fail"; },
+  section("errors", [](const CellResult& r) { return r.status == "error"; },
           [&](const CellResult& r) { fmt::print(out, "  {}: {}\n", where(r), r.message); });
   section("known", [](const CellResult& r) { return r.status == "fail" && r.known_failure; },
           [&](const CellResult& r) {
@@ -56,6 +57,8 @@ bool print_problems(const RunReport& report, std::FILE* out, bool blank_line_fir
             fmt::print(out, "      known: {}\n", r.known_reason.empty() ? "(no reason given)" : r.known_reason);
             if (!r.attribution.empty()) fmt::print(out, "      attribution: {}\n", r.attribution);
           });
+  section("skipped (the path does not apply to the shader)", [](const CellResult& r) { return r.status == "skipped"; },
+          [&](const CellResult& r) { fmt::print(out, "  {}: {}\n", where(r), r.message); });
   section("known failures that passed (remove them from the expectations)",
           [](const CellResult& r) { return r.status == "pass" && r.known_failure; },
           [&](const CellResult& r) { fmt::print(out, "  {}: {}\n", where(r), r.known_reason); });
@@ -64,9 +67,11 @@ bool print_problems(const RunReport& report, std::FILE* out, bool blank_line_fir
 
 void print_totals(const RunReport& report, std::FILE* out) {
   const size_t known = known_failures(report);
-  fmt::print(out, "{}{} cells: {} passed, {} failed, {} known, {} errors in {:.1f} s\n",
+  const size_t skipped = report.count("skipped");
+  fmt::print(out, "{}{} cells: {} passed, {} failed, {} known, {} errors{} in {:.1f} s\n",
              report.acceptable() ? "" : "FAIL: ", report.results.size(), report.count("pass"),
-             report.count("fail") - known, known, report.count("error"), report.wall_ms / 1000.0);
+             report.count("fail") - known, known, report.count("error"),
+             skipped ? fmt::format(", {} skipped", skipped) : "", report.wall_ms / 1000.0);
 }
 
 }  // namespace shaderbed

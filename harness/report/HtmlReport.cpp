@@ -46,14 +46,14 @@ double own_ms(const CellResult& r) {
   return ms;
 }
 
-// "pass", "fail" (new), "known", "error".
+// "pass", "fail" (new), "known", "error", "skipped".
 std::string kind(const CellResult& r) {
   if (r.status == "fail") return r.known_failure ? "known" : "fail";
-  return r.status == "pass" || r.status == "error" ? r.status : "error";
+  return r.status == "pass" || r.status == "error" || r.status == "skipped" ? r.status : "error";
 }
 
 std::string status_label(const std::string& k) {
-  return k == "pass" ? "pass" : k == "fail" ? "FAIL" : k == "known" ? "known" : "ERROR";
+  return k == "pass" ? "pass" : k == "fail" ? "FAIL" : k == "known" ? "known" : k == "skipped" ? "skipped" : "ERROR";
 }
 
 int status_rank(const std::string& k) { return k == "error" ? 3 : k == "fail" ? 2 : k == "known" ? 1 : 0; }
@@ -172,7 +172,7 @@ class Writer {
       if (r.status == "pass" && example.insert(r.case_name + "/" + r.variant).second) own(r);
     // 3. The other renders of a failing cell's case/variant/shape (the attribution evidence).
     for (const CellResult& r : cells)
-      if (kind(r) != "pass")
+      if (kind(r) != "pass" && kind(r) != "skipped")
         for (size_t s : groups_.at(group_key(r))) consider(cells[s].artefacts.render_png);
     // 4. Whatever still fits: references, then renders, then error maps.
     for (const CellResult& r : cells) consider(r.artefacts.reference_png);
@@ -273,12 +273,13 @@ class Writer {
     if (r.known_failure)
       h += fmt::format("<p class=\"known\"><b>known failure</b>{}</p>",
                        r.known_reason.empty() ? "" : ": " + escape(r.known_reason));
+    if (!r.reference_note.empty()) h += fmt::format("<p class=\"note\"><b>reference</b>: {}</p>", escape(r.reference_note));
 
     const std::string imgs = image(a.reference_png, "reference", "reference") + image(a.render_png, "render", "render") +
                              image(a.error_png, "error heat map", "error (threshold = mid grey)");
     if (!imgs.empty()) h += "<div class=\"imgs\">" + imgs + "</div>";
     // Every render of this case/variant/shape, for failing cells: which ones agree.
-    if (k != "pass") {
+    if (k != "pass" && k != "skipped") {
       std::string strip;
       for (size_t s : groups_.at(group_key(r))) {
         const CellResult& o = report_.results[s];
@@ -296,7 +297,7 @@ class Writer {
     auto row = [&](const std::string& key, const std::string& value) {
       h += fmt::format("<tr><th>{}</th><td>{}</td></tr>", key, value);
     };
-    if (r.status != "error") {
+    if (r.status == "pass" || r.status == "fail") {
       row("interior", fmt::format("max {} &nbsp; threshold {} &nbsp; smallest passing {} &nbsp; rmse {} &nbsp; psnr {} dB",
                                   sci(m.max_abs), sci(r.interior_threshold), sci(m.min_passing_interior), sci(m.rmse),
                                   db(m.psnr)));
@@ -351,7 +352,7 @@ class Writer {
     const CellResult& r = report_.results[i];
     const CellMetrics& m = r.metrics;
     const std::string k = kind(r);
-    const bool measured = r.status != "error";
+    const bool measured = r.status == "pass" || r.status == "fail";
     auto num = [&](double v, bool shown) {
       return shown ? fmt::format("<td class=\"n\" data-v=\"{}\">{}</td>", sort_value(v), sci(v)) : "<td class=\"n\" data-v=\"\">-</td>";
     };
@@ -438,11 +439,13 @@ class Writer {
           continue;
         }
         const MatrixColumn& col = m.columns[c];
-        const char* k = cell.failed ? "fail" : cell.errors ? "error" : cell.known ? "known" : "pass";
+        const char* k = cell.failed ? "fail" : cell.errors ? "error" : cell.known ? "known"
+                        : cell.skipped == cell.total ? "skipped" : "pass";
         std::string title = fmt::format("{} {} {}: {} of {} passed", row.case_name, row.variant, col.label(), cell.passed,
                                         cell.total);
         for (const auto& [n, what] :
-             {std::pair{cell.failed, "failed"}, std::pair{cell.known, "known failures"}, std::pair{cell.errors, "errors"}})
+             {std::pair{cell.failed, "failed"}, std::pair{cell.known, "known failures"}, std::pair{cell.errors, "errors"},
+              std::pair{cell.skipped, "skipped"}})
           if (n) title += fmt::format(", {} {}", n, what);
         const std::string cells = base + col.language + "/" + col.backend + "/" + col.path + "/";
         h += fmt::format("<td class=\"mx {}\">{}</td>", k, filter_link(cells, escape(cell.text()), title));
@@ -509,6 +512,8 @@ class Writer {
     h += fmt::format("<span class=\"tot st fail\"><b>{}</b> failed</span>", fails);
     h += fmt::format("<span class=\"tot st known\"><b>{}</b> known failures</span>", known);
     h += fmt::format("<span class=\"tot st error\"><b>{}</b> errors</span>", report_.count("error"));
+    if (const size_t skipped = report_.count("skipped"))
+      h += fmt::format("<span class=\"tot st skipped\"><b>{}</b> skipped</span>", skipped);
     h += fmt::format("<span class=\"tot\">{:.1f} s</span>", report_.wall_ms / 1000.0);
     h += fmt::format("<span class=\"verdict {}\">{}</span>", report_.acceptable() ? "ok" : "bad",
                      report_.acceptable() ? "acceptable" : "NOT acceptable");
@@ -526,7 +531,8 @@ class Writer {
         "interior threshold as mid grey. Click a table header to sort, a row for details, an image to zoom.</p>\n",
         summary_.images_embedded, summary_.image_bytes / 1048576.0, summary_.images_linked, summary_.images_missing);
     std::string nav;
-    for (const auto& [k, title] : {std::pair{"fail", "failures"}, std::pair{"error", "errors"}, std::pair{"known", "known failures"}}) {
+    for (const auto& [k, title] : {std::pair{"fail", "failures"}, std::pair{"error", "errors"}, std::pair{"known", "known failures"},
+                                  std::pair{"skipped", "skipped"}}) {
       size_t n = 0;
       for (const CellResult& r : report_.results) n += kind(r) == k;
       if (n) nav += fmt::format("<a href=\"#sec-{}\">{} ({})</a>", k, title, n);
@@ -541,11 +547,12 @@ class Writer {
     h += failure_section("fail", "Failures", 40);
     h += failure_section("error", "Errors", 20);
     h += failure_section("known", "Known failures", 0);
+    h += failure_section("skipped", "Skipped: the path does not apply to the shader", 0);
 
     h += "<section id=\"all\"><h2>All cells</h2>\n<div class=\"filters\"><input id=\"filter\" type=\"search\" "
          "placeholder=\"filter: text in any column\" size=\"40\"> <select id=\"status\"><option value=\"\">all</option>"
          "<option value=\"failing\">not passing</option><option value=\"fail\">failed</option><option "
-         "value=\"known\">known</option><option value=\"error\">errors</option><option value=\"pass\">passed</option>"
+         "value=\"known\">known</option><option value=\"error\">errors</option><option value=\"skipped\">skipped</option><option value=\"pass\">passed</option>"
          "</select> <span id=\"shown\"></span> <button id=\"expand\" type=\"button\">expand shown</button> <button "
          "id=\"collapse\" type=\"button\">collapse all</button></div>\n";
     if (collapsed())
@@ -602,7 +609,7 @@ code,pre{font:12px/1.35 ui-monospace,"DejaVu Sans Mono",monospace}
 .verdict.ok{background:#d6f5dc;color:#145c22}.verdict.bad{background:#fbd5d5;color:#8a1111}
 .st{padding:0 6px;border-radius:3px;font-weight:600;white-space:nowrap}
 .st.pass{background:#d6f5dc;color:#145c22}.st.fail{background:#fbd5d5;color:#8a1111}
-.st.known{background:#fdf0c4;color:#6b5200}.st.error{background:#e7d4f7;color:#4b1677}
+.st.known{background:#fdf0c4;color:#6b5200}.st.error{background:#e7d4f7;color:#4b1677}.st.skipped{background:#eceff1;color:#455a64}
 table.kv{border-collapse:collapse;margin:6px 0}
 table.kv th{text-align:left;font-weight:600;padding:1px 10px 1px 0;vertical-align:top;white-space:nowrap;color:#444}
 table.kv td{padding:1px 16px 1px 0;vertical-align:top}
@@ -636,7 +643,7 @@ table.matrix .rh{text-align:left}table.matrix td.n{text-align:right;font-variant
 table.matrix a.mxl{color:inherit;text-decoration:none;display:block}table.matrix a.mxl:hover{text-decoration:underline}
 table.matrix td.mx{font-variant-numeric:tabular-nums}table.matrix td.none{color:#bbb}
 table.matrix td.pass{background:#eef9f0}table.matrix td.fail{background:#fbd5d5;color:#8a1111;font-weight:600}
-table.matrix td.known{background:#fdf0c4;color:#6b5200}table.matrix td.error{background:#e7d4f7;color:#4b1677;font-weight:600}
+table.matrix td.known{background:#fdf0c4;color:#6b5200}table.matrix td.error{background:#e7d4f7;color:#4b1677;font-weight:600}table.matrix td.skipped{background:#eceff1;color:#455a64}
 )css";
 
   static constexpr const char* kScript = R"js(
@@ -760,8 +767,8 @@ table.matrix td.known{background:#fdf0c4;color:#6b5200}table.matrix td.error{bac
     if (text || st) collapsed = false;   // a big table shows rows once asked for some
     Array.prototype.forEach.call(table.tBodies, function (b) {
       var k = b.classList.contains('pass') ? 'pass' : b.classList.contains('fail') ? 'fail'
-            : b.classList.contains('known') ? 'known' : 'error';
-      var ok = (!st || st === k || (st === 'failing' && k !== 'pass')) &&
+            : b.classList.contains('known') ? 'known' : b.classList.contains('skipped') ? 'skipped' : 'error';
+      var ok = (!st || st === k || (st === 'failing' && k !== 'pass' && k !== 'skipped')) &&
                (!text || b.rows[0].textContent.toLowerCase().indexOf(text) >= 0 ||
                 (b.dataset.id || '').toLowerCase().indexOf(text) >= 0);
       b.hidden = collapsed || !ok;

@@ -38,6 +38,7 @@ ojson cell_json(const CellResult& r) {
                 {"message", r.message}};
   cell["attribution"] = {{"verdict", r.attribution}, {"reason", r.attribution_reason}};
   cell["known_failure"] = {{"known", r.known_failure}, {"reason", r.known_reason}};
+  if (!r.reference_note.empty()) cell["reference_note"] = r.reference_note;
   cell["metrics"] = {{"max_abs", json_number(m.max_abs)},
                      {"rmse", json_number(m.rmse)},
                      {"psnr", json_number(m.psnr)},
@@ -171,8 +172,9 @@ CellResult read_cell(const json& c, const std::string& p) {
   read_required(c, "path", p, r.path);
   read_required(c, "shape", p, r.shape);
   read_required(c, "status", p, r.status);
-  if (r.status != "pass" && r.status != "fail" && r.status != "error")
-    throw BadField{child(p, "status"), "expected \"pass\", \"fail\" or \"error\", found \"" + r.status + "\""};
+  if (r.status != "pass" && r.status != "fail" && r.status != "error" && r.status != "skipped")
+    throw BadField{child(p, "status"),
+                   "expected \"pass\", \"fail\", \"error\" or \"skipped\", found \"" + r.status + "\""};
   read(c, "message", p, r.message);
   if (const json* a = object_at(c, "attribution", p)) {
     read(*a, "verdict", child(p, "attribution"), r.attribution);
@@ -182,6 +184,7 @@ CellResult read_cell(const json& c, const std::string& p) {
     read(*k, "known", child(p, "known_failure"), r.known_failure);
     read(*k, "reason", child(p, "known_failure"), r.known_reason);
   }
+  read(c, "reference_note", p, r.reference_note);
   if (const json* m = object_at(c, "metrics", p)) {
     const std::string mp = child(p, "metrics");
     CellMetrics& x = r.metrics;
@@ -337,7 +340,8 @@ std::string to_json(const RunReport& report) {
                  {"pass", report.count("pass")},
                  {"fail", report.count("fail") - known},
                  {"known", known},
-                 {"error", report.count("error")}};
+                 {"error", report.count("error")},
+                 {"skipped", report.count("skipped")}};
   j["results"] = ojson::array();
   for (const CellResult& r : report.results) j["results"].push_back(cell_json(r));
   // Compiler output can hold any bytes: invalid UTF-8 becomes U+FFFD instead of an exception.

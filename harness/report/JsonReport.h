@@ -13,7 +13,7 @@ namespace shaderbed {
 // {"schema": 2,
 //  "tool": {"glslang", "spirv_tools", "spirv_cross", "llvm", "mesa": {"vulkan", "gl"}},
 //  "shard": "I/N" or "", "out_dir": "...", "wall_ms": 1234.5, "workers": 2,
-//  "totals": {"cells", "pass", "fail", "known", "error"},        (derived; ignored on read)
+//  "totals": {"cells", "pass", "fail", "known", "error", "skipped"},        (derived; ignored on read)
 //  "results": [{
 //    "id": "case/variant/language/backend/path/shape",               (derived; ignored on read)
 //    "case", "variant", "language", "backend", "path", "shape",

@@ -84,7 +84,7 @@ struct Counts {
     ++tests;
     seconds += cell_seconds(r);
     if (r.status == "error") ++errors;
-    else if (r.status == "fail" && r.known_failure) ++skipped;
+    else if ((r.status == "fail" && r.known_failure) || r.status == "skipped") ++skipped;
     else if (r.status != "pass") ++failures;
   }
   std::string attributes() const {
@@ -129,6 +129,8 @@ std::string to_junit(const RunReport& report) {
       if (r.status == "error") {
         x += fmt::format("      <error type=\"error\" message=\"{}\">{}</error>\n", escape(first_line(r.message), true),
                          escape(r.message));
+      } else if (r.status == "skipped") {
+        x += fmt::format("      <skipped message=\"{}\"/>\n", escape("does not apply: " + first_line(r.message), true));
       } else if (r.status == "fail" && r.known_failure) {
         x += fmt::format("      <skipped message=\"{}\">{}</skipped>\n", escape("known: " + r.known_reason, true),
                          escape(details(r)));

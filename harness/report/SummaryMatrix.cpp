@@ -33,7 +33,8 @@ bool worse(double a, double b) { return std::isnan(a) ? !std::isnan(b) : !std::i
 
 std::string MatrixCell::text() const {
   if (empty()) return "";
-  return fmt::format("{}/{}{}", passed, total, failed + errors ? "!" : known ? "*" : "");
+  if (skipped == total) return "skip";
+  return fmt::format("{}/{}{}", passed, total - skipped, failed + errors ? "!" : known ? "*" : "");
 }
 
 std::string percent_of_threshold(double ratio) {
@@ -65,8 +66,9 @@ SummaryMatrix build_summary_matrix(const RunReport& report) {
     ++cell.total;
     if (r.status == "pass") ++cell.passed;
     else if (r.status == "fail") ++(r.known_failure ? cell.known : cell.failed);
+    else if (r.status == "skipped") ++cell.skipped;
     else ++cell.errors;
-    if (r.status != "pass") cell.problems.push_back(i);
+    if (r.status != "pass" && r.status != "skipped") cell.problems.push_back(i);
     if (r.status != "pass" && r.status != "fail") continue;   // an error drew nothing: no error to show
     const double e = r.metrics.max_abs, t = r.interior_threshold;
     const double ratio = t > 0 ? e / t : e > 0 ? std::numeric_limits<double>::infinity() : e;   // e: 0 or NaN

@@ -20,10 +20,12 @@ struct MatrixCell {
   size_t failed = 0;    // new failures
   size_t known = 0;     // known failures (expectations)
   size_t errors = 0;
+  size_t skipped = 0;   // the path does not apply to the shader: not in passed/total's "run"
   std::vector<size_t> problems;   // indices into RunReport::results of the cells that did not pass
 
   bool empty() const { return total == 0; }
-  // "4/4"; "2/4!" when a failure or error is new; "3/4*" when only known failures; "" if empty.
+  // "4/4"; "2/4!" when a failure or error is new; "3/4*" when only known failures; "" if
+  // empty; "skip" when every cell was skipped (skipped cells are left out of the count).
   std::string text() const;
 };
 

@@ -1,6 +1,16 @@
 #pragma once
-// Binds a shader's samplers from a case: the binding table maps a sampler's name to a
-// texture the harness generated (today only the variant's LUT, called "lut").
+// Binds a shader's samplers from a case. A sampler, or the Texture2D of an SM4 pair, is
+// bound by its name: to an image file under [textures] (run/TextureFiles.h), or to the
+// variant's generated LUT (`NAME = "lut"` under [bindings.<language>]). How it samples
+// comes, lowest first, from the LUT defaults (SamplerSettings{}), a DX9 effect's
+// sampler_state for it, the case's [textures] entry for the SamplerState it is sampled
+// with (t.Sample(s, uv); an entry with settings only), and the texture's own entry.
+// On Vulkan the SamplerState is its own descriptor and gets that result for the texture
+// it samples; on GL the pair is one sampler2D named after the texture (GlslangFrontEnd).
+#include <map>
+#include <memory>
+#include <string>
+
 #include "backends/Backend.h"
 #include "scene/CaseFile.h"
 
@@ -8,15 +18,38 @@ namespace shaderbed {
 
 class CaseTextures final : public TextureResolver {
  public:
-  CaseTextures(const BindingTable& bindings, const Texture* lut, std::string case_path)
-      : bindings_(bindings), lut_(lut), case_path_(std::move(case_path)) {}
+  // `effect_states`: a DX9 effect's sampler_state settings by sampler name (may be null).
+  CaseTextures(const BindingTable& bindings, std::map<std::string, TextureBinding> entries, const Texture* lut,
+               std::string case_path, const std::map<std::string, SamplerSettings>* effect_states = nullptr)
+      : bindings_(bindings), entries_(std::move(entries)), lut_(lut), case_path_(std::move(case_path)),
+        effect_states_(effect_states) {}
+
+  // Before drawing: every [textures] entry names a sampler, texture or sampler state the
+  // program declares; a file entry's cube-ness matches its sampler; every file loads.
+  // Remembers the program's SM4 pairs for settings(). Errors point at the entry's line.
+  Result<void> check(const CompiledProgram& program);
 
   Result<const Texture*> texture(const SamplerBinding& sampler) const override;
+  Result<SamplerSettings> settings(const SamplerBinding& sampler) const override;
+
+  // After check(): "" when the draw reads no image file, else the note every report
+  // carries for the cell: the reference models read no texture, so the files are not in
+  // the reference (the case's parameters stand for them).
+  std::string reference_note() const;
 
  private:
+  Error at_entry(const std::string& name, std::string message) const;
+  // effect state, then the entry's own patch.
+  SamplerSettings own_settings(const std::string& name) const;
+
   const BindingTable& bindings_;
+  std::map<std::string, TextureBinding> entries_;
   const Texture* lut_;
   std::string case_path_;
+  const std::map<std::string, SamplerSettings>* effect_states_;
+  std::map<std::string, std::shared_ptr<const Texture>> loaded_;   // by entry name
+  std::map<std::string, std::vector<std::string>> states_of_texture_;   // SM4 Texture2D -> its SamplerStates
+  std::map<std::string, std::vector<std::string>> textures_of_state_;   // SamplerState -> its Texture2Ds
 };
 
 }  // namespace shaderbed

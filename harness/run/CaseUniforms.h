@@ -1,7 +1,8 @@
 #pragma once
 // Binds a shader's uniforms from a case: the case's binding table for the language maps
-// a uniform name (or an HLSL register "cN" of the $Global block) to scene quantities
-// and model parameters, concatenated in order.
+// a uniform name (or an HLSL register "cN" of the $Global block) to scene quantities,
+// model parameters and literal numbers, concatenated in order; a row_vector binding is
+// uploaded transposed.
 #include "backends/UniformPacking.h"
 #include "compile/ShaderModule.h"
 #include "scene/CaseFile.h"
@@ -21,6 +22,10 @@ class CaseUniforms final : public UniformResolver {
   Result<void> check_all_bound(const CompiledProgram& program) const;
 
  private:
+  // The binding's values, concatenated, before any layout is applied.
+  Result<std::vector<float>> concatenate(const Binding& binding, const UniformMember& member) const;
+  Error error(std::string message, int line = 0) const;
+
   const BindingTable& bindings_;
   NamedValues values_;      // scene quantities and parameters by name
   std::string case_path_;
@@ -28,5 +33,8 @@ class CaseUniforms final : public UniformResolver {
 
 // Scene quantities plus the case's parameters (parameters may not shadow quantities).
 NamedValues bindable_values(const SceneSetup& scene, const std::map<std::string, std::vector<double>>& params);
+
+// The same for a case: its ambient colour (`ambient`) as "ambient_light", and its parameters.
+NamedValues bindable_values(const SceneSetup& scene, const Case& c);
 
 }  // namespace shaderbed

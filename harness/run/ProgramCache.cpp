@@ -27,7 +27,10 @@ const CachedProgram& ProgramCache::get(const Case& c, const Variant& variant, La
   if (auto it = programs_.find(key); it != programs_.end()) return it->second;
   CachedProgram entry;
   const auto t0 = std::chrono::steady_clock::now();
-  auto source = load_case_program(language, variant.shaders.at(language), c.path);
+  const ShaderFiles& files = variant.shaders.at(language);
+  auto source = load_case_program(language, files, c.path);
+  // A DX9 effect's technique and pass (compile_program routes effects to their front end).
+  if (source) source->effect = {.technique = files.technique, .pass = files.pass, .named_in = c.path, .line = files.line};
   if (source && options_.relaxed_precision) source = relaxed(std::move(*source));
   entry.program = source ? compile_program(*source, options_.opengl) : std::unexpected(source.error());
   if (entry.program) {

@@ -14,6 +14,11 @@ Result<ReferenceImage> render_reference(const Mesh& mesh, const SceneSetup& s, c
   scene.camera = {s.camera.eye, s.camera.target, s.camera.up, s.camera.fovy_degrees, s.camera.near_plane,
                   s.camera.far_plane};
   scene.lights = {s.lights.direction, s.lights.position};
+  // The case's light and ambient term (`light`, `ambient`), as its uniforms see them.
+  scene.light = c.light == CaseLight::point         ? reference::SceneLight::point
+                : c.light == CaseLight::directional ? reference::SceneLight::directional
+                                                    : reference::SceneLight::model_default;
+  scene.ambient = c.ambient.value_or(s.lights.ambient);
   scene.width = s.width;
   scene.height = s.height;
   auto fb = reference::render(scene, c.model,

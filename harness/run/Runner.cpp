@@ -127,7 +127,7 @@ class GroupRunner {
       r.time_ms["reference"] = reference_ms;
       Image image;
       if (auto ok = run_cell(g, cell, mesh, reference, lut, dir, r, image); !ok) {
-        r.status = "error";
+        r.status = ok.error().skipped ? "skipped" : "error";
         r.message = ok.error().to_string();
       } else {
         images.push_back(std::move(image));
@@ -208,12 +208,17 @@ class GroupRunner {
     auto bindings = c.bindings.find(cell.language);
     static const BindingTable no_bindings;
     const BindingTable& table = bindings == c.bindings.end() ? no_bindings : bindings->second;
-    CaseUniforms uniforms(table, bindable_values(scene_, c.params), c.path);
+    CaseUniforms uniforms(table, bindable_values(scene_, c), c.path);
     if (auto bound = uniforms.check_all_bound(*compiled.program); !bound) return bound;
-    CaseTextures textures(table, *lut, c.path);
-    auto rendered = (*cell.backend->backend)
-                        ->render(DrawJob{*compiled.program, cell.path, mesh, uniforms, scene_.width, scene_.height,
-                                         &textures, o_.timing});
+    CaseTextures textures(table, c.textures.for_language(cell.language), *lut, c.path,
+                          &compiled.program->sampler_settings);
+    if (auto ok = textures.check(*compiled.program); !ok) return ok;
+    r.reference_note = textures.reference_note();
+    DrawJob job{*compiled.program, cell.path, mesh, uniforms, scene_.width, scene_.height, &textures, o_.timing};
+    job.render_state = compiled.program->render_state;  // a DX9 effect pass's states
+    const auto attributes = c.attributes.find(cell.language);
+    if (attributes != c.attributes.end()) job.attributes = &attributes->second;
+    auto rendered = (*cell.backend->backend)->render(job);
     if (!rendered)
       return std::unexpected(Error(rendered.error()).in_backend(cell.backend->name + "/" + to_string(cell.path)));
     const RenderTimings& t = rendered->timings;

@@ -48,13 +48,246 @@ Result<Tolerance> tolerance(const std::string& path, const toml::table& t, const
   return Tolerance{*max_abs, *reason};
 }
 
+// Literal numbers: a number, a boolean (1 or 0) or an array of them, nested arrays
+// flattened (a matrix written row by row stays in the order written).
+bool literal_numbers(const toml::node& node, std::vector<double>& out) {
+  if (auto b = node.value_exact<bool>()) {
+    out.push_back(*b ? 1.0 : 0.0);
+    return true;
+  }
+  if (auto v = node.value<double>()) {
+    out.push_back(*v);
+    return true;
+  }
+  if (const toml::array* a = node.as_array()) {
+    for (const toml::node& e : *a)
+      if (!literal_numbers(e, out)) return false;
+    return true;
+  }
+  return false;
+}
+
+// A binding's value: a name, literal numbers, or an array mixing names and numbers.
+Result<std::vector<BindingSource>> binding_sources(const std::string& path, const std::string& uniform,
+                                                   const toml::node& node) {
+  if (auto s = node.value<std::string>()) return std::vector<BindingSource>{{*s, {}}};
+  std::vector<double> numbers_only;
+  if (literal_numbers(node, numbers_only)) return std::vector<BindingSource>{{"", std::move(numbers_only)}};
+  const toml::array* a = node.as_array();
+  if (!a)
+    return std::unexpected(at(path, node, "binding of '" + uniform +
+                                              "' must be a name, a number, an array of names and numbers, or "
+                                              "{ value = ..., layout = \"row_vector\" }"));
+  std::vector<BindingSource> sources;
+  for (const toml::node& e : *a) {
+    if (auto s = e.value<std::string>()) {
+      sources.push_back({*s, {}});
+      continue;
+    }
+    std::vector<double> values;
+    if (!literal_numbers(e, values))
+      return std::unexpected(at(path, e, "binding of '" + uniform + "' holds something that is neither a name nor a number"));
+    if (sources.empty() || !sources.back().name.empty()) sources.push_back({});
+    sources.back().literal.insert(sources.back().literal.end(), values.begin(), values.end());
+  }
+  return sources;
+}
+
+Result<Binding> binding(const std::string& path, const std::string& uniform, const toml::node& node) {
+  Binding b{.line = int(node.source().begin.line)};
+  const toml::node* value = &node;
+  if (const toml::table* t = node.as_table()) {
+    value = t->get("value");
+    if (!value) return std::unexpected(at(path, node, "binding of '" + uniform + "' needs value = ..."));
+    for (const auto& [key, knode] : *t) {
+      if (key.str() == "value") continue;
+      if (key.str() != "layout")
+        return std::unexpected(at(path, knode, "unknown key '" + std::string(key.str()) + "' in the binding of '" +
+                                                   uniform + "' (value, layout)"));
+      const auto layout = knode.value<std::string>();
+      if (layout == "row_vector") b.layout = MatrixLayout::row_vector;
+      else if (layout == "column_vector") b.layout = MatrixLayout::column_vector;
+      else return std::unexpected(at(path, knode, "layout must be \"row_vector\" or \"column_vector\""));
+    }
+  }
+  auto sources = binding_sources(path, uniform, *value);
+  if (!sources) return std::unexpected(sources.error());
+  if (sources->empty()) return std::unexpected(at(path, node, "binding of '" + uniform + "' is empty"));
+  b.sources = std::move(*sources);
+  return b;
+}
+
+bool is_attribute_word(const std::string& w) {
+  for (const char* known : {"position", "normal", "tangent", "texcoord", "uv", "color", "colour"})
+    if (w == known) return true;
+  return false;
+}
+
+Result<AttributeTable> attribute_table(const std::string& path, const std::string& language, const toml::node& node) {
+  const toml::table* t = node.as_table();
+  if (!t) return std::unexpected(at(path, node, "[attributes." + language + "] must be a table"));
+  AttributeTable table;
+  for (const auto& [input, anode] : *t) {
+    const std::string key(input.str());
+    if (key.starts_with("location ")) {
+      const std::string number = key.substr(9);
+      const bool digits = !number.empty() && number.find_first_not_of("0123456789") == std::string::npos;
+      if (!digits) return std::unexpected(at(path, anode, "'" + key + "': write a location as \"location N\""));
+    }
+    const auto word = anode.value<std::string>();
+    if (!word || !is_attribute_word(*word))
+      return std::unexpected(at(path, anode, "vertex input '" + key +
+                                                 "' must map to position, normal, tangent, texcoord (uv) or color"));
+    table[key] = *word;
+  }
+  return table;
+}
+
+// One word of a fixed set, e.g. filter = "linear".
+template <class T>
+Result<T> word(const std::string& path, const toml::node& node, const std::string& key,
+               std::initializer_list<std::pair<const char*, T>> words) {
+  const auto text = node.value<std::string>();
+  std::string known;
+  for (const auto& [name, value] : words) {
+    if (text && *text == name) return value;
+    known += std::string(known.empty() ? "" : ", ") + "\"" + name + "\"";
+  }
+  return std::unexpected(at(path, node, "'" + key + "' must be one of " + known));
+}
+
+// A [textures] entry: { file = "...", filter = ..., address = ..., border = [...],
+// mipmaps = true | false | "file", color = "srgb" | "linear" } (file optional).
+Result<TextureBinding> texture_binding(const std::string& path, const fs::path& shader_root, const std::string& name,
+                                       const toml::node& node) {
+  const toml::table* t = node.as_table();
+  if (!t)
+    return std::unexpected(at(path, node, "texture '" + name + "' must be a table, e.g. { file = \"FILE\", filter = "
+                                                                 "\"linear\", address = \"wrap\" }"));
+  TextureBinding b{.line = int(node.source().begin.line), .column = int(node.source().begin.column)};
+  SamplerSettingsPatch& s = b.settings;
+  const auto filter = [&](const toml::node& n, const std::string& key) {
+    return word<TextureFilter>(path, n, key, {{"nearest", TextureFilter::nearest}, {"linear", TextureFilter::linear}});
+  };
+  const auto address = [&](const toml::node& n, const std::string& key) {
+    return word<AddressMode>(path, n, key, {{"wrap", AddressMode::wrap}, {"mirror", AddressMode::mirror},
+                                            {"clamp", AddressMode::clamp}, {"border", AddressMode::border}});
+  };
+  std::optional<TextureFilter> common_filter;
+  for (const auto& [key_name, value] : *t) {
+    const std::string key(key_name.str());
+    if (key == "file") {
+      if (auto f = value.value<std::string>()) {
+        b.files.push_back((shader_root / *f).lexically_normal().string());
+      } else if (const toml::array* a = value.as_array(); a && a->size() == 6) {
+        for (const toml::node& e : *a) {
+          auto face = e.value<std::string>();
+          if (!face) return std::unexpected(at(path, e, "a cube map's faces are six file names"));
+          b.files.push_back((shader_root / *face).lexically_normal().string());
+        }
+      } else {
+        return std::unexpected(at(path, value, "texture '" + name + "': file must be a file name, or six for a cube "
+                                                                    "map (+X, -X, +Y, -Y, +Z, -Z)"));
+      }
+    } else if (key == "filter" || key == "min_filter" || key == "mag_filter") {
+      auto f = filter(value, key);
+      if (!f) return std::unexpected(f.error());
+      if (key != "mag_filter") s.min_filter = *f;
+      if (key != "min_filter") s.mag_filter = *f;
+      if (key == "filter") common_filter = *f;
+    } else if (key == "mip_filter") {
+      auto f = word<MipFilter>(path, value, key,
+                               {{"none", MipFilter::none}, {"nearest", MipFilter::nearest}, {"linear", MipFilter::linear}});
+      if (!f) return std::unexpected(f.error());
+      s.mip_filter = *f;
+    } else if (key == "address" || key == "address_u" || key == "address_v" || key == "address_w") {
+      auto a = address(value, key);
+      if (!a) return std::unexpected(a.error());
+      if (key == "address" || key == "address_u") s.address_u = *a;
+      if (key == "address" || key == "address_v") s.address_v = *a;
+      if (key == "address" || key == "address_w") s.address_w = *a;
+    } else if (key == "border") {
+      std::vector<double> rgba;
+      if (!literal_numbers(value, rgba) || rgba.size() != 4)
+        return std::unexpected(at(path, value, "texture '" + name + "': border must be [r, g, b, a]"));
+      s.border_color = std::array<float, 4>{float(rgba[0]), float(rgba[1]), float(rgba[2]), float(rgba[3])};
+    } else if (key == "mipmaps") {
+      if (auto m = value.value_exact<bool>()) b.mipmaps = *m ? MipSource::generate : MipSource::none;
+      else if (value.value<std::string>() == "file") b.mipmaps = MipSource::file;
+      else return std::unexpected(at(path, value, "texture '" + name + "': mipmaps must be true (generated), false "
+                                                                       "or \"file\" (the file's own levels)"));
+    } else if (key == "color" || key == "colour") {
+      auto srgb = word<bool>(path, value, key, {{"srgb", true}, {"linear", false}});
+      if (!srgb) return std::unexpected(srgb.error());
+      s.srgb = *srgb;
+    } else {
+      return std::unexpected(at(path, value, "texture '" + name + "': unknown key '" + key +
+                                                 "' (file, filter, min_filter, mag_filter, mip_filter, address, "
+                                                 "address_u, address_v, address_w, border, mipmaps, color)"));
+    }
+  }
+  // Mipmaps filter between levels as the texels are filtered, unless the entry says how.
+  if (b.mipmaps && !s.mip_filter)
+    s.mip_filter = *b.mipmaps == MipSource::none ? MipFilter::none
+                   : common_filter == TextureFilter::nearest ? MipFilter::nearest
+                                                             : MipFilter::linear;
+  if (b.files.empty() && b.mipmaps && *b.mipmaps != MipSource::none)
+    return std::unexpected(at(path, node, "texture '" + name + "': mipmaps need a file"));
+  return b;
+}
+
+Result<TextureTable> texture_table(const std::string& path, const fs::path& shader_root, const toml::node& node) {
+  const toml::table* t = node.as_table();
+  if (!t) return std::unexpected(at(path, node, "[textures] must be a table of NAME = { file = \"FILE\", ... }"));
+  TextureTable table;
+  for (const auto& [key_name, value] : *t) {
+    const std::string key(key_name.str());
+    // [textures.hlsl]: a table of tables under a language's name.
+    if (auto lang = parse_language(key); lang && value.is_table() && !value.as_table()->empty() &&
+                                          std::ranges::all_of(*value.as_table(), [](const auto& kv) {
+                                            return kv.second.is_table();
+                                          })) {
+      for (const auto& [name, entry] : *value.as_table()) {
+        auto b = texture_binding(path, shader_root, std::string(name.str()), entry);
+        if (!b) return std::unexpected(b.error());
+        table.per_language[*lang][std::string(name.str())] = std::move(*b);
+      }
+      continue;
+    }
+    auto b = texture_binding(path, shader_root, key, value);
+    if (!b) return std::unexpected(b.error());
+    table.common[key] = std::move(*b);
+  }
+  return table;
+}
+
 }  // namespace
+
+std::map<std::string, TextureBinding> TextureTable::for_language(Language language) const {
+  std::map<std::string, TextureBinding> entries = common;
+  if (auto it = per_language.find(language); it != per_language.end())
+    for (const auto& [name, b] : it->second) entries[name] = b;
+  return entries;
+}
+
+bool Binding::literal() const {
+  for (const BindingSource& s : sources)
+    if (!s.name.empty()) return false;
+  return true;
+}
+
+std::string Binding::single_name() const { return sources.size() == 1 ? sources.front().name : std::string(); }
 
 Result<Language> parse_language(const std::string& s) {
   if (s == "glsl") return Language::glsl;
   if (s == "hlsl") return Language::hlsl;
   if (s == "cg") return Language::cg;
   return fail("case", "unknown language '" + s + "' (expected glsl, hlsl or cg)");
+}
+
+std::filesystem::path shader_root_of(const std::string& case_path) {
+  const fs::path folder = fs::path(case_path).parent_path();
+  return folder.filename() == "cases" ? folder.parent_path() : folder;
 }
 
 Result<Case> load_case(const std::string& path) {
@@ -69,8 +302,7 @@ Result<Case> load_case(const std::string& path) {
   Case c;
   c.path = path;
   c.name = fs::path(path).stem().string();
-  // Shader paths in a case are relative to the shaders/ folder that holds cases/.
-  const fs::path shader_root = fs::path(path).parent_path().parent_path();
+  const fs::path shader_root = shader_root_of(path);
 
   auto model = root["model"].value<std::string>();
   if (!model) return std::unexpected(at(path, root, "missing 'model' (the reference lighting model)"));
@@ -116,9 +348,19 @@ Result<Case> load_case(const std::string& path) {
       for (const auto& [key, value] : *files) {
         const std::string k(key.str());
         if (k == "vertex" || k == "fragment") continue;
+        // A DX9 effect's technique and pass (compile/EffectFrontEnd.h); default the first.
+        if (k == "technique" || k == "pass") {
+          const auto chosen = value.value<std::string>();
+          if (*lang != Language::hlsl)
+            return std::unexpected(at(path, value, k + " picks a DX9 effect's " + k + ": only hlsl shaders are effects"));
+          if (!chosen || chosen->empty()) return std::unexpected(at(path, value, k + " must name an effect's " + k));
+          (k == "technique" ? shader_files.technique : shader_files.pass) = *chosen;
+          continue;
+        }
         if (k != "vertex_entry" && k != "fragment_entry")
           return std::unexpected(at(path, value, "unknown key '" + k + "' in the " + std::string(lname.str()) +
-                                                     " shaders (vertex, fragment, vertex_entry, fragment_entry)"));
+                                                     " shaders (vertex, fragment, vertex_entry, fragment_entry, "
+                                                     "technique, pass)"));
         const auto entry = value.value<std::string>();
         if (!entry || entry->empty()) return std::unexpected(at(path, value, k + " must name a function"));
         if (*lang == Language::glsl && *entry != "main")
@@ -139,22 +381,45 @@ Result<Case> load_case(const std::string& path) {
       if (!bt) return std::unexpected(at(path, lnode, "[bindings." + std::string(lname.str()) + "] must be a table"));
       BindingTable table;
       for (const auto& [uname, unode] : *bt) {
-        std::vector<std::string> sources;
-        if (auto s = unode.value<std::string>()) {
-          sources.push_back(*s);
-        } else if (const toml::array* a = unode.as_array()) {
-          for (const toml::node& e : *a) {
-            auto s2 = e.value<std::string>();
-            if (!s2) return std::unexpected(at(path, e, "binding sources must be names"));
-            sources.push_back(*s2);
-          }
-        } else {
-          return std::unexpected(at(path, unode, "binding must be a name or an array of names"));
-        }
-        table[std::string(uname.str())] = std::move(sources);
+        auto b = binding(path, std::string(uname.str()), unode);
+        if (!b) return std::unexpected(b.error());
+        table[std::string(uname.str())] = std::move(*b);
       }
       c.bindings[*lang] = std::move(table);
     }
+  }
+
+  if (const toml::node* attributes = root.get("attributes")) {
+    const toml::table* at_table = attributes->as_table();
+    if (!at_table) return std::unexpected(at(path, *attributes, "[attributes.<language>] must be tables"));
+    for (const auto& [lname, lnode] : *at_table) {
+      auto lang = parse_language(std::string(lname.str()));
+      if (!lang) return std::unexpected(at(path, lnode, lang.error().message));
+      auto table = attribute_table(path, std::string(lname.str()), lnode);
+      if (!table) return std::unexpected(table.error());
+      c.attributes[*lang] = std::move(*table);
+    }
+  }
+
+  if (const toml::node* light = root.get("light")) {
+    const auto kind = light->value<std::string>();
+    if (kind == "directional") c.light = CaseLight::directional;
+    else if (kind == "point") c.light = CaseLight::point;
+    else return std::unexpected(at(path, *light, "light must be \"directional\" or \"point\""));
+  }
+  if (const toml::node* ambient = root.get("ambient")) {
+    auto v = numbers(path, *ambient, "ambient");
+    if (!v) return std::unexpected(v.error());
+    if (v->size() != 3)
+      return std::unexpected(at(path, *ambient, "ambient must be [r, g, b], not " + std::to_string(v->size()) +
+                                                    " number" + (v->size() == 1 ? "" : "s")));
+    c.ambient = glm::dvec3((*v)[0], (*v)[1], (*v)[2]);
+  }
+
+  if (const toml::node* textures = root.get("textures")) {
+    auto table = texture_table(path, shader_root, *textures);
+    if (!table) return std::unexpected(table.error());
+    c.textures = std::move(*table);
   }
 
   const toml::table* tol = root["tolerance"].as_table();

@@ -2,11 +2,15 @@
 // A case file (shaders/cases/NAME.toml) names a lighting model, its parameters, the
 // shader files per variant and language, how each shader's uniforms are bound, and the
 // tolerances with their reasons. A case declares only what its shaders use.
+#include <filesystem>
 #include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include <glm/glm.hpp>
+
+#include "backends/SamplerSettings.h"
 #include "compile/ShaderModule.h"
 #include "core/Error.h"
 #include "scene/Primitives.h"
@@ -21,6 +25,10 @@ struct ShaderFiles {
   // Cg files name their own, and one file may hold both stages. GLSL is always main().
   std::string vertex_entry = "main";
   std::string fragment_entry = "main";
+  // A DX9 effect (.fx, compile/EffectFrontEnd.h): the technique and pass whose
+  // `compile` statements give the entries and whose states the draw uses; "" = the first.
+  std::string technique;
+  std::string pass;
 };
 
 enum class LightingMode { per_vertex, per_pixel };
@@ -37,9 +45,54 @@ struct Tolerance {
   std::string reason;
 };
 
-// Uniform name (or HLSL register "cN") -> the scene quantities and parameters whose
-// values, concatenated, fill it (e.g. SpecularColor = ["specular", "power"]).
-using BindingTable = std::map<std::string, std::vector<std::string>>;
+// One part of a binding: a scene quantity or case parameter by name, or literal numbers
+// (`padding = 0.0`, `ambientColor = [0.1, 0.1, 0.1]`, `useFog = false`).
+struct BindingSource {
+  std::string name;              // "" for a literal
+  std::vector<double> literal;
+};
+
+// How a matrix binding is uploaded. column_vector: M of "clip = M v", for mul(M, v) and
+// GLSL's M * v. row_vector: its transpose, so an effect that writes mul(v, M) with D3DX
+// matrices runs unchanged (`{ value = "transform", layout = "row_vector" }`).
+enum class MatrixLayout { column_vector, row_vector };
+
+// Uniform name (or HLSL register "cN") -> the sources whose values, concatenated, fill it
+// (e.g. SpecularColor = ["specular", "power"]).
+struct Binding {
+  std::vector<BindingSource> sources;
+  MatrixLayout layout = MatrixLayout::column_vector;
+  int line = 0;                  // where the case file binds it
+  bool literal() const;          // every source is a literal
+  // The name when the binding is exactly one name (a sampler binds one texture), else "".
+  std::string single_name() const;
+};
+using BindingTable = std::map<std::string, Binding>;
+
+// The light a case's models use (`light = "directional" | "point"`); model_default keeps
+// each model's own (docs/models.md).
+enum class CaseLight { model_default, directional, point };
+
+// A `[textures]` entry: an image file for a sampler or texture (by the name the shader
+// declares: the sampler2D, or the Texture2D of an SM4 pair), or settings only for a
+// SamplerState. What the entry names overrides the effect's sampler_state and, for a
+// texture, its sampler state's entry (backends/SamplerSettings.h says the order).
+enum class MipSource { none, generate, file };   // `mipmaps = false | true | "file"`
+struct TextureBinding {
+  std::vector<std::string> files;   // absolute; none: settings only; six: a cube map (+X, -X, +Y, -Y, +Z, -Z)
+  std::optional<MipSource> mipmaps;
+  SamplerSettingsPatch settings;    // filter, address, border, color = "srgb" | "linear"
+  int line = 0;                     // where the case file binds it
+  int column = 0;
+};
+// `[textures]` holds the entries every language uses; `[textures.<language>]` adds or
+// replaces entries for one language, whose shaders may name their textures differently.
+struct TextureTable {
+  std::map<std::string, TextureBinding> common;
+  std::map<Language, std::map<std::string, TextureBinding>> per_language;
+  // The entries a cell of `language` uses.
+  std::map<std::string, TextureBinding> for_language(Language language) const;
+};
 
 struct Case {
   std::string name;          // file stem
@@ -49,6 +102,10 @@ struct Case {
   std::map<std::string, std::vector<double>> params;
   std::vector<Variant> variants;
   std::map<Language, BindingTable> bindings;
+  std::map<Language, AttributeTable> attributes;   // [attributes.<language>] (scene/Mesh.h)
+  CaseLight light = CaseLight::model_default;
+  std::optional<glm::dvec3> ambient;   // `ambient = [r, g, b]`: added to every model's output
+  TextureTable textures;     // [textures]: image files and sampler settings by sampler name
   Tolerance interior;        // pixels whose 3x3 neighbourhood is covered in the reference
   Tolerance silhouette;      // the one-pixel band around the reference's silhouette
   // LUT variants are compared with the analytic reference; max_abs < 0 means "derive
@@ -56,6 +113,11 @@ struct Case {
   std::optional<Tolerance> lut;
   Tessellation tessellation = Tessellation::low;
 };
+
+// Where a case's shader, texture and include paths are relative to: the folder that holds
+// a `cases/` folder (the library's shaders/cases, tests/realworld/cases), else the case
+// file's own folder (a user's case written next to their shader).
+std::filesystem::path shader_root_of(const std::string& case_path);
 
 Result<Case> load_case(const std::string& path);
 

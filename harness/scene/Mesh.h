@@ -2,6 +2,7 @@
 // Indexed triangle mesh in object space, one interleaved vertex format for every shape
 // so backends need a single vertex layout.
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -14,8 +15,18 @@ struct Vertex {
   glm::vec3 normal;    // unit length
   glm::vec3 tangent;   // unit length, along increasing u
   glm::vec2 uv;
+  // Vertex colour (RGBA). The shapes paint it from the normal, (0.5 + 0.5 n, 1)
+  // (vertex_colour_from_normal), so it varies over every shape and is known exactly;
+  // other meshes keep white.
+  glm::vec4 color{1, 1, 1, 1};
 };
-static_assert(sizeof(Vertex) == 44, "backends upload Vertex as a tightly packed 44-byte stride");
+static_assert(sizeof(Vertex) == 60, "backends upload Vertex as a tightly packed 60-byte stride");
+
+inline glm::vec4 vertex_colour_from_normal(const glm::vec3& n) { return {0.5f + 0.5f * n, 1.0f}; }
+
+// A case's explicit vertex input map, `[attributes.<language>]`: input name (or
+// "location N") -> attribute word: position, normal, tangent, texcoord (uv), color (colour).
+using AttributeTable = std::map<std::string, std::string>;
 
 struct Mesh {
   std::string name;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 namespace shaderbed {
 namespace {
@@ -22,6 +23,12 @@ void add_grid_triangles(Mesh& m, uint32_t first, int columns, int rows, bool col
     }
 }
 
+// Every shape's vertex colour, from its normal (Mesh.h).
+Mesh painted(Mesh m) {
+  for (Vertex& v : m.vertices) v.color = vertex_colour_from_normal(v.normal);
+  return m;
+}
+
 }  // namespace
 
 Mesh solid_sphere(float radius, int slices, int stacks) {
@@ -36,7 +43,7 @@ Mesh solid_sphere(float radius, int slices, int stacks) {
     }
   }
   add_grid_triangles(m, 0, slices, stacks, true, true);
-  return m;
+  return painted(std::move(m));
 }
 
 Mesh solid_cube(float size, int n) {
@@ -64,7 +71,7 @@ Mesh solid_cube(float size, int n) {
         m.indices.insert(m.indices.end(), {a, b, d, b, e, d});
       }
   }
-  return m;
+  return painted(std::move(m));
 }
 
 Mesh solid_cone(float base, float height, int slices, int stacks) {
@@ -100,7 +107,7 @@ Mesh solid_cone(float base, float height, int slices, int stacks) {
       m.indices.insert(m.indices.end(), {a, b, d});
       if (i != stacks - 1) m.indices.insert(m.indices.end(), {b, e, d});
     }
-  return m;
+  return painted(std::move(m));
 }
 
 Mesh solid_torus(float inner_radius, float outer_radius, int sides, int rings) {
@@ -118,7 +125,7 @@ Mesh solid_torus(float inner_radius, float outer_radius, int sides, int rings) {
   // Rows advance around z (phi), columns around the tube (psi): (a, d, b) is
   // counter-clockwise seen from outside, as on the sphere.
   add_grid_triangles(m, 0, sides, rings, false, false);
-  return m;
+  return painted(std::move(m));
 }
 
 const std::vector<std::string>& shape_names() {

@@ -1,6 +1,7 @@
 #pragma once
 // The GLUT test-bed shapes (glutSolidSphere/Cube/Cone/Torus) with GLUT's parameters and
-// orientation (axis along +z), smooth normals, tangents along u, and UVs.
+// orientation (axis along +z), smooth normals, tangents along u, UVs, and vertex colours
+// from the normals, (0.5 + 0.5 n, 1).
 //
 // Counts, so tests and reports can state them:
 //   sphere(slices, stacks):  (slices+1)(stacks+1) vertices, 2*slices*(stacks-1) triangles

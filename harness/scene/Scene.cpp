@@ -8,10 +8,27 @@ namespace {
 
 std::vector<float> floats(const glm::dvec4& v) { return {float(v.x), float(v.y), float(v.z), float(v.w)}; }
 
-std::vector<float> floats(const glm::dmat4& m) {
+template <int C, int R>
+std::vector<float> floats(const glm::mat<C, R, double>& m) {
   const double* p = glm::value_ptr(m);   // column-major, as the packer expects
-  return std::vector<float>(p, p + 16);
+  return std::vector<float>(p, p + C * R);
 }
+
+// A matrix under its name and with each suffix.
+void add_matrix(NamedValues& out, const std::string& name, const glm::dmat4& m) {
+  const glm::dmat4 inverse = glm::inverse(m);
+  out[name] = floats(m);
+  out[name + "_inverse"] = floats(inverse);
+  out[name + "_transpose"] = floats(glm::transpose(m));
+  out[name + "_inverse_transpose"] = floats(glm::transpose(inverse));
+}
+
+// A direction through `m` (w = 0), renormalised, as (x, y, z, 0).
+glm::dvec4 direction(const glm::dmat4& m, const glm::dvec3& d) {
+  return {glm::normalize(glm::dvec3(m * glm::dvec4(d, 0.0))), 0.0};
+}
+
+glm::dvec4 position(const glm::dmat4& m, const glm::dvec3& p) { return m * glm::dvec4(p, 1.0); }
 
 }  // namespace
 
@@ -23,16 +40,30 @@ glm::dmat4 projection_matrix(const Camera& c, double aspect) {
 
 NamedValues scene_quantities(const SceneSetup& s) {
   const double aspect = double(s.width) / s.height;
-  const glm::dmat4 transform = projection_matrix(s.camera, aspect) * view_matrix(s.camera) * s.world;
+  const glm::dmat4 view = view_matrix(s.camera);
+  const glm::dmat4 projection = projection_matrix(s.camera, aspect);
+  const glm::dmat4 world_view = view * s.world;
+  NamedValues out;
+  add_matrix(out, "world", s.world);
+  add_matrix(out, "view", view);
+  add_matrix(out, "projection", projection);
+  add_matrix(out, "world_view", world_view);
+  add_matrix(out, "view_projection", projection * view);
+  add_matrix(out, "transform", projection * world_view);
+  out["normal_matrix"] = floats(glm::transpose(glm::inverse(glm::dmat3(s.world))));
+  out["normal_matrix_view"] = floats(glm::transpose(glm::inverse(glm::dmat3(world_view))));
+
+  // Lights and eye in each space: object (no suffix), world, view.
+  const glm::dmat4 identity(1.0);
   const glm::dmat4 inverse_world = glm::inverse(s.world);
-  const glm::dvec4 light_vector{glm::normalize(glm::dvec3(inverse_world * glm::dvec4(s.lights.direction, 0.0))), 0.0};
-  return {
-      {"transform", floats(transform)},
-      {"world", floats(s.world)},
-      {"light_vector", floats(light_vector)},
-      {"light_position", floats(inverse_world * glm::dvec4(s.lights.position, 1.0))},
-      {"eye_position", floats(inverse_world * glm::dvec4(s.camera.eye, 1.0))},
-  };
+  const std::pair<const char*, const glm::dmat4*> spaces[] = {{"", &inverse_world}, {"_world", &identity}, {"_view", &view}};
+  for (const auto& [suffix, from_world] : spaces) {
+    out[std::string("light_vector") + suffix] = floats(direction(*from_world, s.lights.direction));
+    out[std::string("light_position") + suffix] = floats(position(*from_world, s.lights.position));
+    out[std::string("eye_position") + suffix] = floats(position(*from_world, s.camera.eye));
+  }
+  out["ambient_light"] = floats(glm::dvec4(s.lights.ambient, 1.0));
+  return out;
 }
 
 }  // namespace shaderbed

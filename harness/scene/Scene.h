@@ -24,6 +24,7 @@ struct Camera {
 struct Lights {
   glm::dvec3 direction{0, 1, 0};   // toward the directional light
   glm::dvec3 position{0, 50, 0};   // point light
+  glm::dvec3 ambient{0, 0, 0};     // ambient light colour (a case's `ambient`), "ambient_light"
 };
 
 struct SceneSetup {
@@ -34,9 +35,15 @@ struct SceneSetup {
   int height = 256;
 };
 
-// The quantities a shader can bind by name: "transform" (W*V*P as M in clip = M v,
-// depth in [0, 1]), "world", "light_vector" (object space, unit, w = 0),
-// "light_position" and "eye_position" (object space, w = 1).
+// The quantities a shader can bind by name (docs/models.md, "Scene quantities"), every
+// matrix as 16 column-major floats of M in "clip = M v" (3x3 ones as 9):
+//  - matrices: "world", "view", "projection" (depth in [0, 1]), "world_view",
+//    "view_projection", "transform" (= projection * view * world); each also with the
+//    suffixes "_inverse", "_transpose" and "_inverse_transpose";
+//  - "normal_matrix" (3x3 inverse-transpose of world), "normal_matrix_view" (of world_view);
+//  - "light_vector" (unit, toward the directional light, w = 0), "light_position" and
+//    "eye_position" (w = 1) in object space, and the same with "_world" and "_view";
+//  - "ambient_light" (r, g, b, 1): the scene's ambient colour.
 using NamedValues = std::map<std::string, std::vector<float>>;
 NamedValues scene_quantities(const SceneSetup& scene);
 

@@ -8,18 +8,19 @@
 
 #include <gtest/gtest.h>
 
+#include "RealWorldRuns.h"
 #include "run/Runner.h"
 
 namespace shaderbed {
 namespace {
 
 namespace fs = std::filesystem;
-const fs::path kRealWorld = fs::path(SHADERBED_SOURCE_DIR) / "tests" / "realworld";
+using test::kRealWorld;
 
 TEST(RealShaders, OneFileWithNamedEntryPointsPassesOnEveryHlslPath) {
   RunOptions o;
   o.cases_dir = (kRealWorld / "cases").string();
-  o.cases = {"lambert_two_entries"};
+  o.cases = {"hlsl_lambert_two_entries"};
   o.size = 64;
   o.timing = {.warmup = 0, .runs = 0};
   auto report = run_suite(o);
@@ -33,20 +34,20 @@ TEST(RealShaders, OneFileWithNamedEntryPointsPassesOnEveryHlslPath) {
   EXPECT_EQ(report->results.size(), 12u);
 }
 
-// The corpus's lambert_two_entries case with `edit` applied (each pair: text to find, its
+// The corpus's hlsl_lambert_two_entries case with `edit` applied (each pair: text to find, its
 // replacement), run on the sphere at 32 px.
 Result<RunReport> run_edited_case(const std::vector<std::pair<std::string, std::string>>& edits) {
   const fs::path root = fs::temp_directory_path() / ("shaderbed_realworld_" + std::to_string(::getpid()));
   fs::remove_all(root);
   fs::create_directories(root / "cases");
   fs::create_directory_symlink(kRealWorld / "hlsl", root / "hlsl");
-  std::ifstream in(kRealWorld / "cases" / "lambert_two_entries.toml");
+  std::ifstream in(kRealWorld / "cases" / "hlsl_lambert_two_entries.toml");
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   for (const auto& [from, to] : edits) {
     EXPECT_NE(text.find(from), std::string::npos) << from;
     if (text.find(from) != std::string::npos) text.replace(text.find(from), from.size(), to);
   }
-  std::ofstream(root / "cases" / "lambert_two_entries.toml") << text;
+  std::ofstream(root / "cases" / "hlsl_lambert_two_entries.toml") << text;
   RunOptions o;
   o.cases_dir = (root / "cases").string();
   o.size = 32;

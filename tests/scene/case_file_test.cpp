@@ -94,7 +94,10 @@ TEST_F(TempCase, MinimalCaseLoads) {
   EXPECT_EQ(c->model, "lambert");
   EXPECT_EQ(c->params.at("diffuse"), (std::vector<double>{1, 0.5, 0.25}));
   EXPECT_EQ(c->variants[0].mode, LightingMode::per_pixel);
-  EXPECT_EQ(c->bindings.at(Language::glsl).at("spec"), (std::vector<std::string>{"a", "b"}));
+  const Binding& spec = c->bindings.at(Language::glsl).at("spec");
+  ASSERT_EQ(spec.sources.size(), 2u);
+  EXPECT_EQ(spec.sources[0].name, "a");
+  EXPECT_EQ(spec.sources[1].name, "b");
 }
 
 }  // namespace

@@ -23,6 +23,10 @@ namespace shaderbed::gl {
   X(PFNGLCLIPCONTROLPROC, ClipControl, "glClipControl")                                  \
   X(PFNGLCLAMPCOLORPROC, ClampColor, "glClampColor")                                     \
   X(PFNGLPOLYGONMODEPROC, PolygonMode, "glPolygonMode")                                  \
+  X(PFNGLCULLFACEPROC, CullFace, "glCullFace")                                           \
+  X(PFNGLFRONTFACEPROC, FrontFace, "glFrontFace")                                        \
+  X(PFNGLBLENDFUNCPROC, BlendFunc, "glBlendFunc")                                        \
+  X(PFNGLBLENDEQUATIONPROC, BlendEquation, "glBlendEquation")                            \
   X(PFNGLVIEWPORTPROC, Viewport, "glViewport")                                           \
   X(PFNGLCLEARBUFFERFVPROC, ClearBufferfv, "glClearBufferfv")                            \
   X(PFNGLFINISHPROC, Finish, "glFinish")                                                 \
@@ -49,6 +53,7 @@ namespace shaderbed::gl {
   X(PFNGLTEXTURESUBIMAGE2DPROC, TextureSubImage2D, "glTextureSubImage2D")                \
   X(PFNGLTEXTURESUBIMAGE3DPROC, TextureSubImage3D, "glTextureSubImage3D")                \
   X(PFNGLTEXTUREPARAMETERIPROC, TextureParameteri, "glTextureParameteri")                \
+  X(PFNGLTEXTUREPARAMETERFVPROC, TextureParameterfv, "glTextureParameterfv")             \
   X(PFNGLBINDTEXTUREUNITPROC, BindTextureUnit, "glBindTextureUnit")                      \
   X(PFNGLBINDSAMPLERPROC, BindSampler, "glBindSampler")                                  \
   X(PFNGLGETINTERNALFORMATIVPROC, GetInternalformativ, "glGetInternalformativ")          \

@@ -44,10 +44,10 @@ GLint resource_count(const GlFunctions& gl, GLuint program, GLenum interface) {
 
 bool is_builtin(const std::string& name) { return name.starts_with("gl_"); }
 
-// What a single-channel float LUT can be read through: float samplers, no shadow,
-// array, cube, rectangle or multisample variants.
+// What a texture can be read through: float samplers (and cube maps), no shadow, array,
+// rectangle or multisample variants.
 bool lookup_sampler_type(GLenum type) {
-  return type == GL_SAMPLER_1D || type == GL_SAMPLER_2D || type == GL_SAMPLER_3D;
+  return type == GL_SAMPLER_1D || type == GL_SAMPLER_2D || type == GL_SAMPLER_3D || type == GL_SAMPLER_CUBE;
 }
 
 // GL names arrays "x[0]"; the compile stage's reflection (and the resolver) say "x".
@@ -177,11 +177,11 @@ Result<SamplerBinding> sampler_uniform(const GlFunctions& gl, GLuint program, co
                                     "; lookup textures bind one texture per sampler"));
   if (!lookup_sampler_type(u.type))
     return std::unexpected(gl_error("sampler '" + name + "' has GL type " + hex(u.type) +
-                                    "; lookup textures are float sampler1D, sampler2D or sampler3D"));
+                                    "; textures are float sampler1D, sampler2D, sampler3D or samplerCube"));
   GLint unit = 0;
   gl.GetUniformiv(program, u.location, &unit);
   return SamplerBinding{.name = std::move(name), .set = 0, .binding = uint32_t(unit),
-                        .dimensions = shape.sampler_dimensions};
+                        .dimensions = shape.sampler_dimensions, .cube = u.type == GL_SAMPLER_CUBE};
 }
 
 // Every sampler the program does not place with layout(binding) reads unit 0, so two

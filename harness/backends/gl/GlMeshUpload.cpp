@@ -29,8 +29,11 @@ Result<void> check_mesh(const Mesh& mesh) {
 
 }  // namespace
 
-Result<GlMesh> upload_mesh(const GlFunctions& gl, const Mesh& mesh, const std::vector<StageInput>& inputs) {
+Result<GlMesh> upload_mesh(const GlFunctions& gl, const Mesh& mesh, const std::vector<StageInput>& inputs,
+                           const AttributeTable* attributes, Language language) {
   if (auto ok = check_mesh(mesh); !ok) return std::unexpected(ok.error());
+  auto streams = attribute_streams_for(inputs, attributes, language);
+  if (!streams) return std::unexpected(std::move(streams.error()).in_backend("gl"));
   GlMesh out;
   out.vertex_array = make_vertex_array(gl);
   gl.BindVertexArray(out.vertex_array.get());
@@ -44,14 +47,13 @@ Result<GlMesh> upload_mesh(const GlFunctions& gl, const Mesh& mesh, const std::v
                 GL_STATIC_DRAW);
   out.index_count = GLsizei(mesh.indices.size());
 
-  for (const StageInput& input : inputs) {
-    auto stream = attribute_stream_for(input);
-    if (!stream) return std::unexpected(std::move(stream.error()).in_backend("gl"));
-    gl.EnableVertexAttribArray(input.location);
+  for (size_t i = 0; i < inputs.size(); ++i) {
+    const AttributeStream& stream = (*streams)[i];
+    gl.EnableVertexAttribArray(inputs[i].location);
     // Fewer stored components than the shader reads are filled with (0, 0, 1) by GL:
     // a vec4 position gets w = 1.
-    gl.VertexAttribPointer(input.location, GLint(stream->components), GL_FLOAT, GL_FALSE, sizeof(Vertex),
-                           reinterpret_cast<const void*>(uintptr_t(stream->offset)));
+    gl.VertexAttribPointer(inputs[i].location, GLint(stream.components), GL_FLOAT, GL_FALSE, sizeof(Vertex),
+                           reinterpret_cast<const void*>(uintptr_t(stream.offset)));
   }
   if (auto ok = check_gl(gl, "uploading mesh '" + mesh.name + "'"); !ok) return std::unexpected(ok.error());
   return out;

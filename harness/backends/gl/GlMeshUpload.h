@@ -1,6 +1,6 @@
 #pragma once
 // The mesh as GL vertex and index buffers, with one vertex attribute per shader input,
-// matched to the mesh's streams by semantic or name (attribute_stream_for).
+// matched to the mesh's streams by the case's map, semantic or name (attribute_streams_for).
 #include <vector>
 
 #include "backends/gl/GlObject.h"
@@ -19,6 +19,8 @@ struct GlMesh {
 
 // Rejects meshes that would make the driver read out of bounds (indices past the
 // vertex count, a partial triangle) instead of drawing garbage.
-Result<GlMesh> upload_mesh(const GlFunctions& gl, const Mesh& mesh, const std::vector<StageInput>& inputs);
+// `attributes`: the case's [attributes.<language>] map (may be null).
+Result<GlMesh> upload_mesh(const GlFunctions& gl, const Mesh& mesh, const std::vector<StageInput>& inputs,
+                           const AttributeTable* attributes = nullptr, Language language = Language::glsl);
 
 }  // namespace shaderbed::gl

@@ -10,6 +10,7 @@
 #include "backends/gl/GlMeshUpload.h"
 #include "backends/gl/GlProgramBuilder.h"
 #include "backends/gl/GlProgramInterface.h"
+#include "backends/gl/GlRenderState.h"
 #include "backends/gl/GlTextures.h"
 #include "backends/gl/GlUniformUpload.h"
 #include "backends/gl/SpirvUniformLocations.h"
@@ -65,12 +66,23 @@ GlRenderer::~GlRenderer() {
   (void)context_.make_current();
 }
 
-Result<std::unique_ptr<GlRenderer>> GlRenderer::create() {
-  auto context = OsMesaContext::create(4, 5);
+Result<std::unique_ptr<GlRenderer>> GlRenderer::create() { return create(OsMesaContext::Profile::core); }
+
+Result<std::unique_ptr<GlRenderer>> GlRenderer::create_compatibility() {
+  return create(OsMesaContext::Profile::compatibility);
+}
+
+Result<std::unique_ptr<GlRenderer>> GlRenderer::create(OsMesaContext::Profile profile) {
+  auto context = OsMesaContext::create(4, 5, profile);
   if (!context) return std::unexpected(context.error());
   auto functions = load_gl_functions(OsMesaContext::proc_loader());
   if (!functions) return std::unexpected(functions.error());
   std::unique_ptr<GlRenderer> renderer(new GlRenderer(std::move(*context), *functions));
+  if (profile == OsMesaContext::Profile::compatibility) {
+    auto legacy = load_legacy_gl_functions(OsMesaContext::proc_loader());
+    if (!legacy) return std::unexpected(legacy.error());
+    renderer->legacy_ = *legacy;
+  }
   const GlFunctions& gl = renderer->gl_;
 
   GLint major = 0, minor = 0;
@@ -94,11 +106,33 @@ std::vector<ShaderPath> GlRenderer::paths(Language language) const {
 }
 
 Result<RenderOutput> GlRenderer::render(const DrawJob& job) {
+  if (job.path == ShaderPath::native_glsl && !job.program.native_glsl_skip_reason.empty())
+    return std::unexpected(Error(skip("gl", job.program.native_glsl_skip_reason).error()).in_backend("gl"));
+  if (job.path != ShaderPath::native_glsl && !job.program.opengl_skip_reason.empty())
+    return std::unexpected(Error(skip("gl", job.program.opengl_skip_reason).error()).in_backend("gl"));
+  if (job.path == ShaderPath::native_glsl && job.program.native_glsl_compatibility && !legacy_)
+    return render_compatibility(job);
   auto output = render_on_path(job);
   if (output) return output;
   Error error = std::move(output.error());
   error.message = std::string(to_string(job.path)) + " path: " + error.message;
   return std::unexpected(std::move(error).in_stage("gl").in_backend("gl"));
+}
+
+Result<RenderOutput> GlRenderer::render_compatibility(const DrawJob& job) {
+  if (!compatibility_) {
+    auto made = create_compatibility();
+    // No compatibility context here: the path does not apply, it has not failed.
+    if (!made)
+      return std::unexpected(Error(skip("gl", "GL-era GLSL needs a compatibility-profile context: " +
+                                                  made.error().message)
+                                       .error())
+                                 .in_backend("gl"));
+    compatibility_ = std::move(*made);
+  }
+  auto output = compatibility_->render(job);
+  if (auto current = context_.make_current(); !current) return std::unexpected(current.error());
+  return output;
 }
 
 Result<const GlRenderTarget*> GlRenderer::target_of_size(int width, int height) {
@@ -213,13 +247,20 @@ Result<RenderOutput> GlRenderer::render_on_path(const DrawJob& job) {
     return std::unexpected(ok.error());
   auto textures = bind_textures(gl_, interface.samplers, job.textures);
   if (!textures) return std::unexpected(textures.error());
-  auto mesh = upload_mesh(gl_, job.mesh, interface.inputs);
+  auto mesh = upload_mesh(gl_, job.mesh, interface.inputs, job.attributes, job.program.language);
   if (!mesh) return std::unexpected(mesh.error());
 
   (*target)->bind();
   set_fixed_function_state();
+  apply_render_state(gl_, job.render_state);  // a DX9 effect pass's culling, depth, blending, fill
   gl_.UseProgram(program);
   gl_.BindVertexArray(mesh->vertex_array.get());
+  if (legacy_ && job.path == ShaderPath::native_glsl) {   // GL-era GLSL: gl_Vertex, gl_LightSource, ...
+    if (auto ok = bind_legacy_vertex_arrays(gl_, *legacy_, job.program, mesh->vertices.get()); !ok)
+      return std::unexpected(ok.error());
+    if (auto ok = set_legacy_gl_state(gl_, *legacy_, job.program, job.uniforms); !ok)
+      return std::unexpected(ok.error());
+  }
   if (auto ok = check_gl(gl_, "setting up the draw"); !ok) return std::unexpected(ok.error());
   gl_.Finish();  // uploads are not the draw's cost
 

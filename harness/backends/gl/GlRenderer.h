@@ -13,6 +13,7 @@
 #include <string>
 
 #include "backends/Backend.h"
+#include "backends/gl/GlFixedFunctionState.h"
 #include "backends/gl/GlFunctions.h"
 #include "backends/gl/GlObject.h"
 #include "backends/gl/GlProgramInterface.h"
@@ -24,6 +25,9 @@ namespace shaderbed::gl {
 class GlRenderer final : public Backend {
  public:
   static Result<std::unique_ptr<GlRenderer>> create();
+  // A renderer on a compatibility-profile context: GL-era GLSL on the native path, with
+  // the fixed-function state set from the case (GlFixedFunctionState.h).
+  static Result<std::unique_ptr<GlRenderer>> create_compatibility();
   ~GlRenderer() override;
 
   std::string_view name() const override { return "gl"; }
@@ -34,6 +38,9 @@ class GlRenderer final : public Backend {
 
  private:
   GlRenderer(OsMesaContext context, GlFunctions functions);
+  static Result<std::unique_ptr<GlRenderer>> create(OsMesaContext::Profile profile);
+  // GL-era GLSL on the native path: drawn by the compatibility renderer, made on first use.
+  Result<RenderOutput> render_compatibility(const DrawJob& job);
   Result<RenderOutput> render_on_path(const DrawJob& job);
   Result<const GlRenderTarget*> target_of_size(int width, int height);
   void set_fixed_function_state() const;
@@ -49,6 +56,8 @@ class GlRenderer final : public Backend {
   Result<void> time_draws(const DrawJob& job, GLsizei index_count, RenderTimings& timings);
 
   OsMesaContext context_;
+  std::optional<LegacyGlFunctions> legacy_;           // compatibility profile only
+  std::unique_ptr<GlRenderer> compatibility_;         // a core renderer's, for GL-era GLSL
   GlFunctions gl_;
   std::string driver_version_;
   std::string device_name_;   // GL_RENDERER

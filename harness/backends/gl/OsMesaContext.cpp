@@ -60,11 +60,11 @@ OsMesaContext::OsMesaContext(OsMesaContext&&) noexcept = default;
 OsMesaContext& OsMesaContext::operator=(OsMesaContext&&) noexcept = default;
 OsMesaContext::~OsMesaContext() = default;
 
-Result<OsMesaContext> OsMesaContext::create(int major, int minor) {
+Result<OsMesaContext> OsMesaContext::create(int major, int minor, Profile profile) {
   const int attributes[] = {OSMESA_FORMAT,        OSMESA_RGBA,
                             OSMESA_DEPTH_BITS,    0,
                             OSMESA_STENCIL_BITS,  0,
-                            OSMESA_PROFILE,       OSMESA_CORE_PROFILE,
+                            OSMESA_PROFILE,       profile == Profile::core ? OSMESA_CORE_PROFILE : OSMESA_COMPAT_PROFILE,
                             OSMESA_CONTEXT_MAJOR_VERSION, major,
                             OSMESA_CONTEXT_MINOR_VERSION, minor,
                             0};
@@ -73,7 +73,8 @@ Result<OsMesaContext> OsMesaContext::create(int major, int minor) {
   handle->context = osmesa().create_context_attribs(attributes, nullptr);
   if (!handle->context)
     return fail("gl", "OSMesa cannot create a " + std::to_string(major) + "." + std::to_string(minor) +
-                          " core-profile context (is libOSMesa from Mesa >= 11.2 with llvmpipe installed?)");
+                          (profile == Profile::core ? " core" : " compatibility") +
+                          "-profile context (is libOSMesa from Mesa >= 11.2 with llvmpipe installed?)");
   OsMesaContext created(std::move(handle));
   if (auto current = created.make_current(); !current) return std::unexpected(current.error());
   return created;

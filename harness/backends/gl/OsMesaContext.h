@@ -1,5 +1,5 @@
 #pragma once
-// One OSMesa core-profile context. It renders only into FBOs, so the buffer it is made
+// One OSMesa context (core profile; compatibility for GL-era GLSL). It renders only into FBOs, so the buffer it is made
 // current on is a tiny dummy that is never read. This is the only file that includes
 // osmesa.h: its GL/gl.h and glcorearb.h do not mix.
 #include <memory>
@@ -11,8 +11,10 @@ namespace shaderbed::gl {
 
 class OsMesaContext {
  public:
-  // A core-profile context of at least major.minor, current on this thread.
-  static Result<OsMesaContext> create(int major, int minor);
+  enum class Profile { core, compatibility };
+
+  // A context of at least major.minor (core profile unless asked), current on this thread.
+  static Result<OsMesaContext> create(int major, int minor, Profile profile = Profile::core);
 
   OsMesaContext(OsMesaContext&&) noexcept;
   OsMesaContext& operator=(OsMesaContext&&) noexcept;

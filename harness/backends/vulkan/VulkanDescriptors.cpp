@@ -126,7 +126,7 @@ Result<DescriptorBindings> DescriptorBindings::create(const VulkanDevice& device
     for (const TextureDescriptor& t : textures)
       if (t.set == set)
         bindings.push_back({.binding = t.binding,
-                            .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                            .descriptorType = t.type,
                             .descriptorCount = 1,
                             .stageFlags = both_stages});
     used[set] = !bindings.empty();
@@ -141,7 +141,10 @@ Result<DescriptorBindings> DescriptorBindings::create(const VulkanDevice& device
 
   std::vector<VkDescriptorPoolSize> pool_sizes;
   if (!blocks.empty()) pool_sizes.push_back({VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, uint32_t(blocks.size())});
-  if (!textures.empty()) pool_sizes.push_back({VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, uint32_t(textures.size())});
+  for (VkDescriptorType type : {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE,
+                                VK_DESCRIPTOR_TYPE_SAMPLER})
+    if (const auto n = std::ranges::count(textures, type, &TextureDescriptor::type); n > 0)
+      pool_sizes.push_back({type, uint32_t(n)});
   const VkDescriptorPoolCreateInfo pool_info{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO,
                                              .maxSets = uint32_t(std::ranges::count(used, true)),
                                              .poolSizeCount = uint32_t(pool_sizes.size()),
@@ -180,7 +183,7 @@ Result<DescriptorBindings> DescriptorBindings::create(const VulkanDevice& device
                       .dstSet = out.sets_[textures[i].set],
                       .dstBinding = textures[i].binding,
                       .descriptorCount = 1,
-                      .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                      .descriptorType = textures[i].type,
                       .pImageInfo = &image_infos[i]});
   }
   vkUpdateDescriptorSets(dev, uint32_t(writes.size()), writes.data(), 0, nullptr);

@@ -1,8 +1,9 @@
 #pragma once
-// Uniform blocks and lookup textures -> descriptor sets: the blocks of both stages are
+// Uniform blocks and textures -> descriptor sets: the blocks of both stages are
 // merged by (set, binding), each is packed from the UniformResolver into its own
-// host-visible uniform buffer, textures (VulkanTextures) become combined image-samplers
-// in the same sets, and every used set gets a layout, a descriptor set and its writes.
+// host-visible uniform buffer, textures (VulkanTextures) become combined image-samplers,
+// sampled images or samplers in the same sets, and every used set gets a layout, a
+// descriptor set and its writes.
 #include <cstddef>
 #include <span>
 #include <vector>

@@ -206,9 +206,16 @@ Result<std::unique_ptr<VulkanDevice>> VulkanDevice::create(const std::string& ch
                                            .queueFamilyIndex = self->queue_family_,
                                            .queueCount = 1,
                                            .pQueuePriorities = &priority};
+  // Wireframe and point fill (a DX9 effect's FillMode) need fillModeNonSolid; lavapipe has it.
+  VkPhysicalDeviceFeatures supported{};
+  vkGetPhysicalDeviceFeatures(self->physical_device_, &supported);
+  VkPhysicalDeviceFeatures enabled{};
+  enabled.fillModeNonSolid = supported.fillModeNonSolid;
+  self->fill_mode_non_solid_ = supported.fillModeNonSolid == VK_TRUE;
   const VkDeviceCreateInfo device_info{.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO,
                                        .queueCreateInfoCount = 1,
-                                       .pQueueCreateInfos = &queue_info};
+                                       .pQueueCreateInfos = &queue_info,
+                                       .pEnabledFeatures = &enabled};
   if (auto ok = check(vkCreateDevice(self->physical_device_, &device_info, nullptr, &self->device_), "vkCreateDevice"); !ok)
     return std::unexpected(ok.error());
   vkGetDeviceQueue(self->device_, self->queue_family_, 0, &self->queue_);

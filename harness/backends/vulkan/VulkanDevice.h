@@ -63,6 +63,8 @@ class VulkanDevice {
   // later call fails instead of touching objects the driver may still be using.
   Result<void> submit_and_wait(const std::function<void(VkCommandBuffer)>& record);
   bool lost() const { return lost_; }
+  // Whether polygon modes other than FILL are enabled (VkPhysicalDeviceFeatures::fillModeNonSolid).
+  bool fill_mode_non_solid() const { return fill_mode_non_solid_; }
 
   // Two timestamps (begin, end) written around work recorded in submit_and_wait;
   // nullopt when the queue has no timestamp support.
@@ -93,6 +95,7 @@ class VulkanDevice {
   OwnedFence fence_;
   OwnedQueryPool timestamp_pool_;
   bool lost_ = false;
+  bool fill_mode_non_solid_ = false;
 };
 
 }  // namespace shaderbed::vulkan

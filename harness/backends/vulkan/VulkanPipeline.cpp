@@ -61,12 +61,58 @@ Result<OwnedShaderModule> create_shader_module(VkDevice device, const ShaderModu
   return OwnedShaderModule(device, handle);
 }
 
+VkCompareOp to_vulkan(CompareOp op) {
+  switch (op) {
+    case CompareOp::never: return VK_COMPARE_OP_NEVER;
+    case CompareOp::less: return VK_COMPARE_OP_LESS;
+    case CompareOp::equal: return VK_COMPARE_OP_EQUAL;
+    case CompareOp::less_equal: return VK_COMPARE_OP_LESS_OR_EQUAL;
+    case CompareOp::greater: return VK_COMPARE_OP_GREATER;
+    case CompareOp::not_equal: return VK_COMPARE_OP_NOT_EQUAL;
+    case CompareOp::greater_equal: return VK_COMPARE_OP_GREATER_OR_EQUAL;
+    case CompareOp::always: return VK_COMPARE_OP_ALWAYS;
+  }
+  return VK_COMPARE_OP_LESS;
+}
+
+VkBlendFactor to_vulkan(BlendFactor f) {
+  switch (f) {
+    case BlendFactor::zero: return VK_BLEND_FACTOR_ZERO;
+    case BlendFactor::one: return VK_BLEND_FACTOR_ONE;
+    case BlendFactor::src_colour: return VK_BLEND_FACTOR_SRC_COLOR;
+    case BlendFactor::inv_src_colour: return VK_BLEND_FACTOR_ONE_MINUS_SRC_COLOR;
+    case BlendFactor::src_alpha: return VK_BLEND_FACTOR_SRC_ALPHA;
+    case BlendFactor::inv_src_alpha: return VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+    case BlendFactor::dest_alpha: return VK_BLEND_FACTOR_DST_ALPHA;
+    case BlendFactor::inv_dest_alpha: return VK_BLEND_FACTOR_ONE_MINUS_DST_ALPHA;
+    case BlendFactor::dest_colour: return VK_BLEND_FACTOR_DST_COLOR;
+    case BlendFactor::inv_dest_colour: return VK_BLEND_FACTOR_ONE_MINUS_DST_COLOR;
+    case BlendFactor::src_alpha_saturate: return VK_BLEND_FACTOR_SRC_ALPHA_SATURATE;
+  }
+  return VK_BLEND_FACTOR_ONE;
+}
+
+VkBlendOp to_vulkan(BlendOp op) {
+  switch (op) {
+    case BlendOp::add: return VK_BLEND_OP_ADD;
+    case BlendOp::subtract: return VK_BLEND_OP_SUBTRACT;
+    case BlendOp::reverse_subtract: return VK_BLEND_OP_REVERSE_SUBTRACT;
+    case BlendOp::min: return VK_BLEND_OP_MIN;
+    case BlendOp::max: return VK_BLEND_OP_MAX;
+  }
+  return VK_BLEND_OP_ADD;
+}
+
 }  // namespace
 
 Result<GraphicsPipeline> GraphicsPipeline::create(const VulkanDevice& device, VkRenderPass render_pass,
                                                   const CompiledProgram& program, const VertexInputLayout& vertex_input,
-                                                  std::span<const VkDescriptorSetLayout> set_layouts) {
+                                                  std::span<const VkDescriptorSetLayout> set_layouts,
+                                                  const RenderState& state) {
   VkDevice dev = device.device();
+  if (state.fill != FillMode::solid && !device.fill_mode_non_solid())
+    return std::unexpected(backend_error("FillMode " + std::string(state.fill == FillMode::wireframe ? "WIREFRAME" : "POINT") +
+                                         " needs fillModeNonSolid, which this Vulkan device lacks"));
   auto vertex_module = create_shader_module(dev, program.vertex, Stage::vertex);
   if (!vertex_module) return std::unexpected(vertex_module.error());
   auto fragment_module = create_shader_module(dev, program.fragment, Stage::fragment);
@@ -106,23 +152,37 @@ Result<GraphicsPipeline> GraphicsPipeline::create(const VulkanDevice& device, Vk
   const VkPipelineViewportStateCreateInfo viewport_state{.sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO,
                                                          .viewportCount = 1,
                                                          .scissorCount = 1};
-  // No culling: shaderbed compares every covered pixel, whichever way a triangle winds.
+  // By default no culling: shaderbed compares every covered pixel, whichever way a
+  // triangle winds. D3D's CullMode names the winding culled as the image is seen; the
+  // framebuffer's row 0 is the image's top (negative viewport height), and Vulkan's
+  // CLOCKWISE front face is clockwise in exactly those coordinates.
   const VkPipelineRasterizationStateCreateInfo rasterization{
       .sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO,
-      .polygonMode = VK_POLYGON_MODE_FILL,
-      .cullMode = VK_CULL_MODE_NONE,
-      .frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE,
+      .polygonMode = state.fill == FillMode::wireframe ? VK_POLYGON_MODE_LINE
+                     : state.fill == FillMode::point   ? VK_POLYGON_MODE_POINT
+                                                       : VK_POLYGON_MODE_FILL,
+      .cullMode = VkCullModeFlags(state.cull == CullMode::ccw  ? VK_CULL_MODE_BACK_BIT
+                                  : state.cull == CullMode::cw ? VK_CULL_MODE_FRONT_BIT
+                                                               : VK_CULL_MODE_NONE),
+      .frontFace = VK_FRONT_FACE_CLOCKWISE,
       .lineWidth = 1.0f};
   const VkPipelineMultisampleStateCreateInfo multisample{.sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO,
                                                          .rasterizationSamples = VK_SAMPLE_COUNT_1_BIT};
+  // Depth is always written: coverage is read from it (RenderState.h).
   const VkPipelineDepthStencilStateCreateInfo depth_stencil{
       .sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO,
       .depthTestEnable = VK_TRUE,
       .depthWriteEnable = VK_TRUE,
-      .depthCompareOp = VK_COMPARE_OP_LESS};
-  // No blending: the attachment receives the shader's output bits unchanged.
+      .depthCompareOp = to_vulkan(depth_compare_for_one_draw(state))};
+  // Without blending the attachment receives the shader's output bits unchanged.
   const VkPipelineColorBlendAttachmentState blend_attachment{
-      .blendEnable = VK_FALSE,
+      .blendEnable = state.blend ? VK_TRUE : VK_FALSE,
+      .srcColorBlendFactor = to_vulkan(state.src_blend),
+      .dstColorBlendFactor = to_vulkan(state.dest_blend),
+      .colorBlendOp = to_vulkan(state.blend_op),
+      .srcAlphaBlendFactor = to_vulkan(state.src_blend),
+      .dstAlphaBlendFactor = to_vulkan(state.dest_blend),
+      .alphaBlendOp = to_vulkan(state.blend_op),
       .colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
                         VK_COLOR_COMPONENT_A_BIT};
   const VkPipelineColorBlendStateCreateInfo blend{.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO,

@@ -1,7 +1,8 @@
 #pragma once
 // The graphics pipeline of one draw: the program's SPIR-V stages, the mesh vertex
 // layout, the uniform descriptor set layouts, and shaderbed's fixed raster state
-// (triangle list, no culling, depth test LESS with writes, no blending).
+// (triangle list) with the draw's RenderState: culling, depth, blending, fill mode
+// (default: no culling, depth test LESS with writes, no blending, solid).
 #include <span>
 
 #include <vulkan/vulkan.h>
@@ -9,6 +10,7 @@
 #include "backends/vulkan/VulkanDevice.h"
 #include "backends/vulkan/VulkanHandles.h"
 #include "backends/vulkan/VulkanVertexInput.h"
+#include "backends/RenderState.h"
 #include "compile/ShaderModule.h"
 #include "core/Error.h"
 
@@ -20,7 +22,8 @@ class GraphicsPipeline {
   // is the driver's compile work that build_ms measures.
   static Result<GraphicsPipeline> create(const VulkanDevice& device, VkRenderPass render_pass,
                                          const CompiledProgram& program, const VertexInputLayout& vertex_input,
-                                         std::span<const VkDescriptorSetLayout> set_layouts);
+                                         std::span<const VkDescriptorSetLayout> set_layouts,
+                                         const RenderState& state = {});
 
   VkPipeline pipeline() const { return pipeline_.get(); }
   VkPipelineLayout layout() const { return layout_.get(); }

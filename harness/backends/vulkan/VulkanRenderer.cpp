@@ -176,7 +176,7 @@ Result<RenderOutput> VulkanRenderer::render(const DrawJob& job) {
   if (!packed) return std::unexpected(packed.error());
   auto resolved_textures = resolve_textures(*device_, *samplers, job.textures);
   if (!resolved_textures) return std::unexpected(resolved_textures.error());
-  auto vertex_input = vertex_input_layout(job.program.vertex.reflection);
+  auto vertex_input = vertex_input_layout(job.program.vertex.reflection, job.attributes, job.program.language);
   if (!vertex_input) return std::unexpected(vertex_input.error());
 
   const VkExtent2D extent{uint32_t(job.width), uint32_t(job.height)};
@@ -203,13 +203,14 @@ Result<RenderOutput> VulkanRenderer::render(const DrawJob& job) {
 
   RenderOutput output;
   RenderTarget& rt = **target;
-  const std::string key = program_key(job.program, ShaderPath::spirv);
+  const std::string key = program_key(job.program, ShaderPath::spirv, job.render_state);
   auto cached = pipelines_.find(key);
   output.timings.program_cached = cached != pipelines_.end();
   const auto build_start = Clock::now();
   if (!output.timings.program_cached) {
     auto pipeline =
-        GraphicsPipeline::create(*device_, render_pass_.get(), job.program, *vertex_input, bindings->set_layouts());
+        GraphicsPipeline::create(*device_, render_pass_.get(), job.program, *vertex_input, bindings->set_layouts(),
+                                 job.render_state);
     if (!pipeline) return std::unexpected(pipeline.error());
     // Bounded so long sweeps cannot grow it without limit; which entry goes does not
     // matter for correctness, only for how often a pipeline is rebuilt.

@@ -7,6 +7,7 @@
 
 #include "compile/ShaderModule.h"
 #include "core/Error.h"
+#include "scene/Mesh.h"
 
 namespace shaderbed::vulkan {
 
@@ -15,7 +16,9 @@ struct VertexInputLayout {
   std::vector<VkVertexInputAttributeDescription> attributes;
 };
 
-// Error naming the input when a vertex shader input is not one of the mesh's streams.
-Result<VertexInputLayout> vertex_input_layout(const Reflection& vertex_reflection);
+// Error naming every vertex shader input that is not one of the mesh's streams;
+// `attributes` is the case's [attributes.<language>] map (may be null).
+Result<VertexInputLayout> vertex_input_layout(const Reflection& vertex_reflection, const AttributeTable* attributes,
+                                              Language language);
 
 }  // namespace shaderbed::vulkan

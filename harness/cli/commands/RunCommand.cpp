@@ -27,7 +27,10 @@ Command add_run_command(CLI::App& app) {
   auto args = std::make_shared<RunArguments>();
   RunOptions& run = args->options;
   CLI::App* cmd = app.add_subcommand("run", "Render the suite's cells and compare them with the reference");
-  cmd->add_option("--case", run.cases, "Case names (shaders/cases/NAME.toml); default: all")->delimiter(',');
+  cmd->add_option("--case", run.cases,
+                  "Case names (NAME.toml in --cases-dir) or case files (any path ending in .toml, e.g. a case "
+                  "written next to your own shader); default: every case in --cases-dir")
+      ->delimiter(',');
   cmd->add_option("--variant", run.variants, "Variants: vertex, pixel, pixel_lut; default: all")->delimiter(',');
   cmd->add_option("--backend", run.backends, "Backends: vulkan, gl; default: both")->delimiter(',');
   cmd->add_option("--lang", run.languages, "Languages: hlsl, glsl, cg; default: every language a case has")

@@ -46,10 +46,37 @@ int read(const char* path, int* width, int* height, int* channels, float** pixel
   return 0;
 }
 
+int read_level(const char* path, int level, int* width, int* height, int* channels, int* levels, int* is_8bit,
+               float** pixels, char* error, size_t error_size) {
+  auto in = OIIO::ImageInput::open(path);
+  if (!in) return failed(OIIO::geterror(), error, error_size);
+  int count = 1;
+  while (in->seek_subimage(0, count)) ++count;
+  if (level < 0 || level >= count)
+    return failed("has no mip level " + std::to_string(level) + " (it has " + std::to_string(count) + ")", error,
+                  error_size);
+  if (!in->seek_subimage(0, level)) return failed(in->geterror(), error, error_size);
+  const OIIO::ImageSpec& spec = in->spec();
+  const size_t values = size_t(spec.width) * spec.height * spec.nchannels;
+  auto* data = static_cast<float*>(std::malloc(values * sizeof(float)));
+  if (!data) return failed("out of memory", error, error_size);
+  if (!in->read_image(0, level, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, data)) {
+    std::free(data);
+    return failed(in->geterror(), error, error_size);
+  }
+  *width = spec.width;
+  *height = spec.height;
+  *channels = spec.nchannels;
+  *levels = count;
+  *is_8bit = spec.format == OIIO::TypeDesc::UINT8;
+  *pixels = data;
+  return 0;
+}
+
 void free_pixels(float* pixels) { std::free(pixels); }
 
-const ShaderbedImageIo kTable{write, read, free_pixels};
+const ShaderbedImageIo kTable{write, read, free_pixels, read_level};
 
 }  // namespace
 
-extern "C" __attribute__((visibility("default"))) const ShaderbedImageIo* shaderbed_image_io_v1() { return &kTable; }
+extern "C" __attribute__((visibility("default"))) const ShaderbedImageIo* shaderbed_image_io_v2() { return &kTable; }

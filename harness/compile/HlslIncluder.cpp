@@ -1,0 +1,40 @@
+#include "compile/HlslIncluder.h"
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+namespace shaderbed {
+
+glslang::TShader::Includer::IncludeResult* HlslIncluder::includeLocal(const char* header, const char* includer, size_t depth) {
+  namespace fs = std::filesystem;
+  if (depth > 32) return failure("#include nested more than 32 deep (an include cycle?)");
+  const fs::path base = fs::path(includer ? includer : "").parent_path();
+  const std::string name = (base / header).lexically_normal().string();
+  if (once_.contains(name)) {
+    const std::string& empty = texts_.emplace_back();
+    return new IncludeResult(name, empty.data(), 0, nullptr);
+  }
+  std::ifstream in(name, std::ios::binary);
+  if (!in)
+    return failure("cannot read '" + name + "' (#include \"" + header + "\" is resolved relative to the including file)");
+  std::ostringstream text;
+  text << in.rdbuf();
+  read_.push_back({name, text.str()});
+  static const std::regex pragma_once(R"((^|\n)[ \t]*#[ \t]*pragma[ \t]+once\b)");
+  if (std::regex_search(read_.back().text, pragma_once)) once_.insert(name);
+  const std::string& stored = texts_.emplace_back(read_.back().text);
+  return new IncludeResult(name, stored.data(), stored.size(), nullptr);
+}
+
+glslang::TShader::Includer::IncludeResult* HlslIncluder::includeSystem(const char* header, const char* includer, size_t depth) {
+  return includeLocal(header, includer, depth);
+}
+
+glslang::TShader::Includer::IncludeResult* HlslIncluder::failure(std::string message) {
+  const std::string& stored = texts_.emplace_back(std::move(message));
+  return new IncludeResult("", stored.c_str(), stored.size(), nullptr);
+}
+
+}  // namespace shaderbed

@@ -1,0 +1,34 @@
+#pragma once
+// `#include` for HLSL (and DX9 effects), as fxc resolves it with its default handler:
+// relative to the including file (`"file"` and `<file>` alike: shaderbed has no system
+// include paths), `#pragma once` honoured. A missing header is an error naming it, at the
+// including file's line (glslang reports it there). Every file read is recorded with its
+// exact text, so the disk compile cache can re-check it on a hit.
+#include <deque>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <glslang/Public/ShaderLang.h>
+
+#include "compile/Compiler.h"
+
+namespace shaderbed {
+
+class HlslIncluder : public glslang::TShader::Includer {
+ public:
+  explicit HlslIncluder(std::vector<SourceFile>& read) : read_(read) {}
+
+  IncludeResult* includeLocal(const char* header, const char* includer, size_t depth) override;
+  IncludeResult* includeSystem(const char* header, const char* includer, size_t depth) override;
+  void releaseInclude(IncludeResult* result) override { delete result; }
+
+ private:
+  IncludeResult* failure(std::string message);
+
+  std::vector<SourceFile>& read_;
+  std::set<std::string> once_;
+  std::deque<std::string> texts_;  // stable storage for the returned contents
+};
+
+}  // namespace shaderbed

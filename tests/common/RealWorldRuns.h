@@ -1,0 +1,24 @@
+#pragma once
+// The real-world corpus (tests/realworld/) and a quick run of one of its cases: small
+// images, two shapes, one worker, no timed repeats.
+#include <filesystem>
+#include <string>
+
+#include "run/Runner.h"
+
+namespace shaderbed::test {
+
+inline const std::filesystem::path kRealWorld = std::filesystem::path(SHADERBED_SOURCE_DIR) / "tests" / "realworld";
+
+inline RunOptions quick_run(const std::string& cases_dir, const std::string& case_name, int size = 48) {
+  RunOptions o;
+  o.cases_dir = cases_dir;
+  o.cases = {case_name};
+  o.shapes = {"sphere", "torus"};
+  o.size = size;
+  o.jobs = 1;
+  o.timing = {.warmup = 0, .runs = 0};
+  return o;
+}
+
+}  // namespace shaderbed::test
