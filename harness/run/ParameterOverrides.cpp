@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 
 #include <fmt/format.h>
 
@@ -21,6 +22,8 @@ Result<std::pair<std::string, std::vector<double>>> parse_parameter(const std::s
     auto [end, ec] = std::from_chars(item.data(), item.data() + item.size(), v);
     if (item.empty() || ec != std::errc() || end != item.data() + item.size())
       return fail("options", fmt::format("--param '{}': '{}' is not a number", text, item));
+    // NaN would make the render and the reference both NaN, and NaN compares as no error.
+    if (!std::isfinite(v)) return fail("options", fmt::format("--param '{}': '{}' is not a finite number", text, item));
     values.push_back(v);
     start = comma + 1;
   }

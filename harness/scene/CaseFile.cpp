@@ -1,9 +1,13 @@
 #include "scene/CaseFile.h"
 
 #include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <filesystem>
 
 #include <toml++/toml.h>
+
+#include "scene/TomlKeys.h"
 
 namespace shaderbed {
 namespace fs = std::filesystem;
@@ -19,14 +23,35 @@ Error at(const std::string& path, std::string message) {
   return Error{.message = std::move(message), .file = path, .stage = "case"};
 }
 
+// Case and variant names become folder names under --out: letters, digits, '_', '-' and
+// '.', not starting with '.', so no name can leave the output folder.
+Result<void> plain_name(const std::string& path, const toml::node& node, const std::string& name, const char* what) {
+  const bool ok = !name.empty() && name.front() != '.' && std::all_of(name.begin(), name.end(), [](unsigned char ch) {
+    return std::isalnum(ch) || ch == '_' || ch == '-' || ch == '.';
+  });
+  if (ok) return {};
+  return std::unexpected(at(path, node, std::string(what) + " '" + name +
+                                            "' must be letters, digits, '_', '-' or '.' (it names an output folder)"));
+}
+
 // A number or an array of numbers.
 Result<std::vector<double>> numbers(const std::string& path, const toml::node& node, const std::string& key) {
   std::vector<double> out;
-  if (auto v = node.value<double>()) return std::vector<double>{*v};
+  // NaN or Inf would make the render and the reference both non-finite, which compares
+  // as no error: refused, as no model documents them.
+  auto finite = [&](const toml::node& n, double v) -> Result<void> {
+    if (std::isfinite(v)) return {};
+    return std::unexpected(at(path, n, "'" + key + "' must be finite, not " + (std::isnan(v) ? "nan" : "inf")));
+  };
+  if (auto v = node.value<double>()) {
+    if (auto ok = finite(node, *v); !ok) return std::unexpected(ok.error());
+    return std::vector<double>{*v};
+  }
   if (const toml::array* a = node.as_array()) {
     for (const toml::node& e : *a) {
       auto v = e.value<double>();
       if (!v) return std::unexpected(at(path, e, "'" + key + "' must hold numbers"));
+      if (auto ok = finite(e, *v); !ok) return std::unexpected(ok.error());
       out.push_back(*v);
     }
     return out;
@@ -39,9 +64,14 @@ Result<Tolerance> tolerance(const std::string& path, const toml::table& t, const
   if (!node) return std::unexpected(at(path, t, "[tolerance] needs '" + key + "' = { max_abs = ..., reason = \"...\" }"));
   const toml::table* tt = node->as_table();
   if (!tt) return std::unexpected(at(path, *node, "tolerance '" + key + "' must be a table"));
+  if (auto ok = check_keys(path, *tt, {"max_abs", "reason"}, "tolerance '" + key + "'"); !ok)
+    return std::unexpected(ok.error());
   auto max_abs = (*tt)["max_abs"].value<double>();
   auto reason = (*tt)["reason"].value<std::string>();
   if (!max_abs) return std::unexpected(at(path, *node, "tolerance '" + key + "' needs max_abs"));
+  // A NaN threshold would pass every cell (no comparison with NaN fails).
+  if (!std::isfinite(*max_abs) || *max_abs < 0)
+    return std::unexpected(at(path, *node, "tolerance '" + key + "': max_abs must be a finite number >= 0"));
   // Thresholds are explained, not tuned: a number without a reason is refused.
   if (!reason || reason->empty())
     return std::unexpected(at(path, *node, "tolerance '" + key + "' needs a reason saying why this threshold"));
@@ -304,7 +334,16 @@ Result<Case> load_case(const std::string& path) {
   c.name = fs::path(path).stem().string();
   const fs::path shader_root = shader_root_of(path);
 
+  if (auto ok = check_keys(path, root,
+                           {"model", "description", "tessellation", "params", "variants", "bindings", "attributes",
+                            "light", "ambient", "textures", "tolerance"},
+                           "the case");
+      !ok)
+    return std::unexpected(ok.error());
+  if (auto ok = plain_name(path, root, c.name, "case file name"); !ok) return std::unexpected(ok.error());
   auto model = root["model"].value<std::string>();
+  if (!model && root.get("model"))
+    return std::unexpected(at(path, *root.get("model"), "'model' must be a string naming the reference lighting model"));
   if (!model) return std::unexpected(at(path, root, "missing 'model' (the reference lighting model)"));
   c.model = *model;
   c.description = root["description"].value_or(std::string());
@@ -314,6 +353,8 @@ Result<Case> load_case(const std::string& path) {
     else return std::unexpected(at(path, *root.get("tessellation"), "tessellation must be \"low\" or \"high\""));
   }
 
+  if (root.get("params") && !root["params"].as_table())
+    return std::unexpected(at(path, *root.get("params"), "'params' must be a table: [params] name = value"));
   if (const toml::table* params = root["params"].as_table()) {
     for (const auto& [key, node] : *params) {
       auto v = numbers(path, node, std::string(key.str()));
@@ -329,6 +370,7 @@ Result<Case> load_case(const std::string& path) {
     const toml::table* vt = vnode.as_table();
     if (!vt) return std::unexpected(at(path, vnode, "variant '" + std::string(vname.str()) + "' must be a table"));
     Variant v{.name = std::string(vname.str())};
+    if (auto ok = plain_name(path, vnode, v.name, "variant name"); !ok) return std::unexpected(ok.error());
     const std::string mode = (*vt)["mode"].value_or(std::string(v.name == "vertex" ? "per_vertex" : "per_pixel"));
     if (mode == "per_vertex") v.mode = LightingMode::per_vertex;
     else if (mode == "per_pixel") v.mode = LightingMode::per_pixel;
@@ -424,6 +466,8 @@ Result<Case> load_case(const std::string& path) {
 
   const toml::table* tol = root["tolerance"].as_table();
   if (!tol) return std::unexpected(at(path, root, "missing [tolerance] (interior and silhouette, each with a reason)"));
+  if (auto ok = check_keys(path, *tol, {"interior", "silhouette", "lut"}, "[tolerance]"); !ok)
+    return std::unexpected(ok.error());
   auto interior = tolerance(path, *tol, "interior");
   if (!interior) return std::unexpected(interior.error());
   auto silhouette = tolerance(path, *tol, "silhouette");
@@ -435,7 +479,11 @@ Result<Case> load_case(const std::string& path) {
     auto reason = lt ? (*lt)["reason"].value<std::string>() : std::nullopt;
     if (!reason || reason->empty())
       return std::unexpected(at(path, *lut, "tolerance 'lut' needs a reason saying how the threshold follows from the LUT"));
-    c.lut = Tolerance{(*lt)["max_abs"].value_or(-1.0), *reason};
+    if (auto ok = check_keys(path, *lt, {"max_abs", "reason"}, "tolerance 'lut'"); !ok) return std::unexpected(ok.error());
+    const double max_abs = (*lt)["max_abs"].value_or(-1.0);   // absent: derived from the LUT
+    if (lt->get("max_abs") && (!std::isfinite(max_abs) || max_abs < 0))
+      return std::unexpected(at(path, *lut, "tolerance 'lut': max_abs must be a finite number >= 0 (or left out)"));
+    c.lut = Tolerance{max_abs, *reason};
   }
   for (const Variant& v : c.variants)
     if (!v.lut.empty() && !c.lut)

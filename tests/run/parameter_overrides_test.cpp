@@ -14,7 +14,7 @@ TEST(ParameterOverrides, ParsesScalarsAndLists) {
   auto list = parse_parameter("diffuse=1,0.5,-2e-3");
   ASSERT_TRUE(list);
   EXPECT_EQ(list->second, (std::vector<double>{1, 0.5, -2e-3}));
-  for (const char* bad : {"power", "=3", "power=", "power=abc", "power=1,,2", "power=1x"})
+  for (const char* bad : {"power", "=3", "power=", "power=abc", "power=1,,2", "power=1x", "power=nan", "power=inf", "d=1,-inf,0"})
     EXPECT_FALSE(parse_parameter(bad)) << bad;
 }
 
