@@ -13,6 +13,7 @@
 
 #include <fmt/format.h>
 
+#include "core/AtomicFile.h"
 #include "core/Fnv1a.h"
 #include "report/Markup.h"
 #include "report/SummaryMatrix.h"
@@ -99,10 +100,7 @@ class Writer {
     choose_images(std::min(options_.image_budget, options_.max_page_bytes > markup ? options_.max_page_bytes - markup : 0));
     const std::string html = page();
     const fs::path index = dir_ / "index.html";
-    std::ofstream out(index, std::ios::binary);
-    if (!out) return std::unexpected(Error{.message = "cannot write HTML report", .file = index.string(), .stage = "report"});
-    out << html;
-    if (!out) return std::unexpected(Error{.message = "write failed", .file = index.string(), .stage = "report"});
+    if (auto ok = write_file_atomically(index.string(), html, "HTML report"); !ok) return std::unexpected(ok.error());
     summary_.index_path = index.string();
     summary_.html_bytes = html.size();
     return summary_;

@@ -1,5 +1,6 @@
 #include "report/JsonReport.h"
 
+#include "core/AtomicFile.h"
 #include "report/JsonValues.h"
 
 #include <algorithm>
@@ -349,14 +350,7 @@ std::string to_json(const RunReport& report) {
 }
 
 Result<void> write_json(const RunReport& report, const std::string& path) {
-  std::error_code ec;
-  if (const auto parent = std::filesystem::path(path).parent_path(); !parent.empty())
-    std::filesystem::create_directories(parent, ec);
-  std::ofstream out(path);
-  if (!out) return std::unexpected(Error{.message = "cannot write JSON report", .file = path, .stage = "report"});
-  out << to_json(report) << '\n';
-  if (!out) return std::unexpected(Error{.message = "write failed", .file = path, .stage = "report"});
-  return {};
+  return write_file_atomically(path, to_json(report) + '\n', "JSON report");
 }
 
 Result<RunReport> parse_json(std::string_view text, const std::string& file) {

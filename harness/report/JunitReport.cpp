@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "core/AtomicFile.h"
 #include "report/Markup.h"
 
 namespace shaderbed {
@@ -151,14 +152,7 @@ std::string to_junit(const RunReport& report) {
 }
 
 Result<void> write_junit(const RunReport& report, const std::string& path) {
-  std::error_code ec;
-  if (const auto parent = std::filesystem::path(path).parent_path(); !parent.empty())
-    std::filesystem::create_directories(parent, ec);
-  std::ofstream out(path, std::ios::binary);
-  if (!out) return std::unexpected(Error{.message = "cannot write JUnit report", .file = path, .stage = "report"});
-  out << to_junit(report);
-  if (!out) return std::unexpected(Error{.message = "write failed", .file = path, .stage = "report"});
-  return {};
+  return write_file_atomically(path, to_junit(report), "JUnit report");
 }
 
 }  // namespace shaderbed

@@ -2,6 +2,8 @@
 
 #include <toml++/toml.h>
 
+#include "scene/TomlKeys.h"
+
 namespace shaderbed {
 namespace {
 
@@ -16,11 +18,27 @@ std::vector<std::string> split(const std::string& s) {
   }
 }
 
-// '*' matches any run of characters within one segment.
+// '*' matches any run of characters within one segment. Greedy with one backtrack point
+// (the last '*'): O(|pattern| x |text|) at worst, where the recursive form was exponential
+// in the number of stars.
 bool glob(std::string_view pattern, std::string_view text) {
-  if (pattern.empty()) return text.empty();
-  if (pattern[0] == '*') return glob(pattern.substr(1), text) || (!text.empty() && glob(pattern, text.substr(1)));
-  return !text.empty() && pattern[0] == text[0] && glob(pattern.substr(1), text.substr(1));
+  size_t p = 0, t = 0;
+  size_t star = std::string_view::npos, resume = 0;
+  while (t < text.size()) {
+    if (p < pattern.size() && pattern[p] == '*') {
+      star = p++;
+      resume = t;
+    } else if (p < pattern.size() && pattern[p] == text[t]) {
+      ++p, ++t;
+    } else if (star != std::string_view::npos) {
+      p = star + 1;
+      t = ++resume;
+    } else {
+      return false;
+    }
+  }
+  while (p < pattern.size() && pattern[p] == '*') ++p;
+  return p == pattern.size();
 }
 
 }  // namespace
@@ -43,11 +61,23 @@ Result<std::vector<KnownFailure>> load_expectations(const std::string& path) {
                                  .stage = "expectations"});
   }
   std::vector<KnownFailure> known;
+  if (auto ok = check_keys(path, root, {"known"}, "the expectations file"); !ok) {
+    Error e = ok.error();
+    e.stage = "expectations";
+    return std::unexpected(e);
+  }
   const toml::array* entries = root["known"].as_array();
   if (!entries) return known;
   for (const toml::node& node : *entries) {
     const int line = int(node.source().begin.line);
     const toml::table* t = node.as_table();
+    if (t) {
+      if (auto ok = check_keys(path, *t, {"cells", "reason"}, "[[known]]"); !ok) {
+        Error e = ok.error();
+        e.stage = "expectations";
+        return std::unexpected(e);
+      }
+    }
     auto cells = t ? (*t)["cells"].value<std::string>() : std::nullopt;
     auto reason = t ? (*t)["reason"].value<std::string>() : std::nullopt;
     if (!cells || split(*cells).size() != 6)

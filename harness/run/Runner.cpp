@@ -31,6 +31,7 @@
 #include "compile/Compiler.h"
 #include "core/CacheSettings.h"
 #include "lut/LookupTexture.h"
+#include "reference/ModelRegistry.h"
 #include "lut/LutTolerance.h"
 #include "scene/CaseFile.h"
 #include "scene/CaseSelection.h"
@@ -52,6 +53,14 @@ Result<std::vector<Case>> select_cases(const RunOptions& o) {
   if (!selected) return std::unexpected(selected.error());
   std::vector<Case> cases = std::move(*selected);
   if (auto ok = apply_parameter_overrides(o.params, o.cases, cases); !ok) return std::unexpected(ok.error());
+  // An unknown model is bad input in the case file, not an error in every one of its cells.
+  for (const Case& c : cases)
+    if (!reference::find_model(c.model)) {
+      std::string known;
+      for (const std::string& name : reference::model_names()) known += (known.empty() ? "" : ", ") + name;
+      return std::unexpected(Error{.message = "unknown model '" + c.model + "' (models: " + known + ")", .file = c.path,
+                                   .line = c.model_line, .stage = "case"});
+    }
   std::vector<std::string> variant_names;
   for (const Case& c : cases)
     for (const Variant& v : c.variants)

@@ -346,6 +346,7 @@ Result<Case> load_case(const std::string& path) {
     return std::unexpected(at(path, *root.get("model"), "'model' must be a string naming the reference lighting model"));
   if (!model) return std::unexpected(at(path, root, "missing 'model' (the reference lighting model)"));
   c.model = *model;
+  c.model_line = int(root.get("model")->source().begin.line);
   c.description = root["description"].value_or(std::string());
   if (auto t = root["tessellation"].value<std::string>()) {
     if (*t == "low") c.tessellation = Tessellation::low;

@@ -98,6 +98,7 @@ struct Case {
   std::string name;          // file stem
   std::string path;
   std::string model;         // reference model name
+  int model_line = 0;        // where the case names it
   std::string description;
   std::map<std::string, std::vector<double>> params;
   std::vector<Variant> variants;

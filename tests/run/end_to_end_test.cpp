@@ -293,5 +293,31 @@ TEST(EndToEnd, BadCaseFileIsOneLineWithFileAndLine) {
   fs::remove_all(dir);
 }
 
+TEST(EndToEnd, UnwritableOutputsAreBadInputBeforeAnythingRuns) {
+  const fs::path file = fs::temp_directory_path() / ("shaderbed_plain_file_" + std::to_string(::getpid()));
+  std::ofstream(file) << "a file, not a folder\n";
+  for (const std::string option : {"--json", "--junit", "--html", "--out"}) {
+    auto [status, out] = shaderbed_cli("run --case phong --shape sphere " + option + " " + (file / "sub" / "x").string());
+    EXPECT_EQ(status, 2) << option << "\n" << out;
+    EXPECT_NE(out.find(option + ": cannot write into"), std::string::npos) << out;
+    EXPECT_EQ(out.find("cells:"), std::string::npos) << "nothing ran\n" << out;
+  }
+  fs::remove(file);
+}
+
+TEST(EndToEnd, UnknownModelIsBadInputAtItsLineBeforeAnythingRuns) {
+  const fs::path dir = fs::temp_directory_path() / ("shaderbed_badmodel_" + std::to_string(::getpid()));
+  fs::create_directories(dir / "cases");
+  std::ofstream(dir / "cases" / "typo.toml")
+      << "# a typo in the model\nmodel = \"phongg\"\n[variants.pixel]\nhlsl = { vertex = \"a.hlsl\", fragment = \"a.hlsl\" }\n"
+         "[tolerance]\ninterior = { max_abs = 1e-5, reason = \"r\" }\nsilhouette = { max_abs = 1e-4, reason = \"r\" }\n";
+  auto [status, out] = shaderbed_cli("run --cases-dir " + (dir / "cases").string());
+  EXPECT_EQ(status, 2) << out;
+  EXPECT_NE(out.find("typo.toml:2:"), std::string::npos) << out;
+  EXPECT_NE(out.find("unknown model 'phongg' (models: "), std::string::npos) << out;
+  EXPECT_EQ(out.find("cells:"), std::string::npos) << "nothing ran\n" << out;
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace shaderbed

@@ -26,6 +26,29 @@ TEST(Expectations, PatternsMatchWholeSegments) {
   EXPECT_TRUE(matches("*/*/*/*/*/*", "a/b/c/d/e/f"));
   EXPECT_TRUE(matches("ward_*/pixel*/glsl/*/*/*", "ward_iso/pixel_lut/glsl/gl/glsl/cone"));
   EXPECT_FALSE(matches("warn/pixel/*/gl/*", "warn/pixel/hlsl/gl/cross/torus")) << "six segments";
+  EXPECT_TRUE(matches("a*b*c/*/*/*/*/*", "axxbyybc/v/l/b/p/s")) << "a later star takes over after a mismatch";
+  EXPECT_FALSE(matches("a*b*c/*/*/*/*/*", "axxbyybd/v/l/b/p/s"));
+  EXPECT_TRUE(matches("**/*/*/*/*/*", "/v/l/b/p/s")) << "stars match the empty run";
+  EXPECT_FALSE(matches("?/*/*/*/*/*", "x/v/l/b/p/s")) << "no other wildcard than *";
+}
+
+TEST(Expectations, ManyStarsInOneSegmentMatchWithoutBacktrackingBlowUp) {
+  // The recursive matcher needed > 30 s for this one failing cell (issue 13).
+  std::string stars;
+  for (int i = 0; i < 40; ++i) stars += "*a";
+  const std::string pattern = stars + "b/*/*/*/*/*";
+  EXPECT_FALSE(matches(pattern, std::string(200, 'a') + "/v/l/b/p/s"));
+  EXPECT_TRUE(matches(pattern, std::string(200, 'a') + "b/v/l/b/p/s"));
+}
+
+TEST(Expectations, UnknownKeysAreRefusedWithTheNearestOne) {
+  const fs::path file = fs::temp_directory_path() / ("shaderbed_known_key_" + std::to_string(::getpid()) + ".toml");
+  std::ofstream(file) << "[[known]]\ncells = \"a/b/c/d/e/f\"\nreason = \"r\"\nreasno = \"typo\"\n";
+  auto known = load_expectations(file.string());
+  fs::remove(file);
+  ASSERT_FALSE(known);
+  EXPECT_EQ(known.error().line, 4);
+  EXPECT_NE(known.error().message.find("did you mean 'reason'?"), std::string::npos) << known.error().to_string();
 }
 
 TEST(Expectations, KnownFailureIsReportedAsKnownAndNewOneFails) {

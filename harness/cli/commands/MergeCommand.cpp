@@ -29,7 +29,7 @@ Command add_merge_command(CLI::App& app) {
   args->outputs.add_options(cmd);
   add_console_flags(cmd, args->console);
   return {cmd, [args] {
-            if (!args->outputs.load_charts()) return kExitBadInput;
+            if (!args->outputs.load_charts() || !args->outputs.check_writable()) return kExitBadInput;
             RunReport merged;
             std::set<std::string> seen;
             for (const std::string& path : args->inputs) {

@@ -1,10 +1,12 @@
 #include "cli/commands/ReportOutputs.h"
 
 #include <filesystem>
+#include <tuple>
 
 #include <fmt/format.h>
 
 #include "core/ChildProcess.h"
+#include "core/WritablePath.h"
 #include "report/HtmlReport.h"
 #include "report/JsonReport.h"
 #include "report/JunitReport.h"
@@ -46,6 +48,18 @@ bool ReportOutputs::load_charts() {
       return false;
     }
     loaded_charts.push_back({std::filesystem::path(svg).stem().string(), std::move(text), svg});
+  }
+  return true;
+}
+
+bool ReportOutputs::check_writable() const {
+  for (const auto& [path, what, folder] : {std::tuple{json, "--json", false}, std::tuple{junit, "--junit", false},
+                                           std::tuple{html, "--html", true}}) {
+    if (path.empty()) continue;
+    if (auto ok = folder ? check_writable_folder(path, what) : check_writable_file(path, what); !ok) {
+      fmt::print(stderr, "shaderbed: {}\n", ok.error().to_string());
+      return false;
+    }
   }
   return true;
 }

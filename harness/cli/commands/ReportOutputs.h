@@ -23,6 +23,8 @@ struct ReportOutputs {
   // Reads the --chart files before any work is done; false (after printing why) when one is
   // not a self-contained SVG.
   bool load_charts();
+  // Checks every output path can be written, before any work; false after printing why.
+  bool check_writable() const;
   // Writes what was asked for; prints where; false (after printing the error) on failure.
   bool write(const RunReport& report) const;
 };

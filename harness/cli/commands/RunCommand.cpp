@@ -7,6 +7,7 @@
 
 #include "cli/commands/Command.h"
 #include "cli/commands/ReportOutputs.h"
+#include "core/WritablePath.h"
 #include "run/Runner.h"
 #include "report/ConsoleProgress.h"
 #include "report/ConsoleReport.h"
@@ -63,7 +64,12 @@ Command add_run_command(CLI::App& app) {
       ->check(CLI::Range(0, 256));
 
   return {cmd, [args] {
-            if (!args->outputs.load_charts()) return kExitBadInput;
+            if (!args->outputs.load_charts() || !args->outputs.check_writable()) return kExitBadInput;
+            if (!args->options.out_dir.empty())
+              if (auto ok = check_writable_folder(args->options.out_dir, "--out"); !ok) {
+                fmt::print(stderr, "shaderbed: {}\n", ok.error().to_string());
+                return kExitBadInput;
+              }
             ConsoleProgress progress(stderr, isatty(STDERR_FILENO), args->console.view == ConsoleView::quiet);
             RunOptions options = args->options;
             options.on_cell = [&](size_t done, size_t total, const CellResult& cell) {

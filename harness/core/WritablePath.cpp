@@ -1,0 +1,30 @@
+#include "core/WritablePath.h"
+
+#include <unistd.h>
+
+#include <filesystem>
+
+namespace shaderbed {
+namespace fs = std::filesystem;
+
+Result<void> check_writable_folder(const std::string& path, const std::string& what) {
+  auto bad = [&](const std::string& why) {
+    return std::unexpected(Error{.message = what + ": cannot write into '" + path + "': " + why, .stage = "options"});
+  };
+  std::error_code ec;
+  if (!fs::exists(path, ec)) fs::create_directories(path, ec);
+  if (ec) return bad(ec.message());
+  if (!fs::is_directory(path, ec)) return bad("not a folder");
+  if (::access(path.c_str(), W_OK) != 0) return bad("permission denied");
+  return {};
+}
+
+Result<void> check_writable_file(const std::string& path, const std::string& what) {
+  std::error_code ec;
+  if (fs::is_directory(path, ec))
+    return std::unexpected(Error{.message = what + ": '" + path + "' is a folder, not a file", .stage = "options"});
+  const fs::path parent = fs::path(path).parent_path();
+  return check_writable_folder(parent.empty() ? "." : parent.string(), what);
+}
+
+}  // namespace shaderbed
