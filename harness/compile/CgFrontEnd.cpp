@@ -1,17 +1,13 @@
 #include "compile/CgFrontEnd.h"
 
-#include <deque>
-#include <filesystem>
-#include <fstream>
 #include <optional>
-#include <set>
-#include <sstream>
 
 #include <glslang/MachineIndependent/localintermediate.h>
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 
 #include "compile/GlslangFrontEnd.h"
+#include "compile/HlslIncluder.h"
 
 namespace shaderbed {
 namespace {
@@ -21,60 +17,33 @@ constexpr const char* kCgMacros =
     "#define SHADERBED 1\n"
     "#define SHADERBED_CG 1\n";
 
-// `#include "file"` relative to the including file. Each included file goes through
-// pass 1 (CgDialect.h) here; the first error is kept so it can be reported with the
-// included file's name and line rather than as a failed #include.
-class CgIncluder : public glslang::TShader::Includer {
+// `#include "file"` relative to the including file (HlslIncluder). Each included file goes
+// through pass 1 (CgDialect.h) here; the first error is kept so it can be reported with
+// the included file's name and line rather than as a failed #include.
+class CgIncluder final : public HlslIncluder {
  public:
-  CgIncluder(std::vector<CgNote>& notes, std::vector<SourceFile>& read) : notes_(notes), read_(read) {}
-
-  IncludeResult* includeLocal(const char* header, const char* includer, size_t depth) override {
-    namespace fs = std::filesystem;
-    if (depth > 32) return failure("#include nested more than 32 deep (an include cycle?)");
-    const fs::path base = fs::path(includer ? includer : "").parent_path();
-    const fs::path resolved = (base / header).lexically_normal();
-    const std::string name = resolved.string();
-    if (once_.contains(name)) return keep(name, "");
-    std::ifstream in(resolved, std::ios::binary);
-    if (!in) return failure("cannot read '" + name + "'");
-    std::ostringstream text;
-    text << in.rdbuf();
-    read_.push_back({name, text.str()});
-    auto prepared = prepare_cg_file(read_.back().text, name);
-    if (!prepared) {
-      if (!error) error = prepared.error();
-      return failure(prepared.error().message);
-    }
-    if (prepared->pragma_once) once_.insert(name);
-    notes_.insert(notes_.end(), prepared->notes.begin(), prepared->notes.end());
-    notes_.push_back({includer ? includer : "", 0, "#include \"" + std::string(header) + "\" resolved to " + name});
-    return keep(name, std::move(prepared->text));
-  }
+  CgIncluder(std::vector<CgNote>& notes, std::vector<SourceFile>& read) : HlslIncluder(read), notes_(notes) {}
 
   IncludeResult* includeSystem(const char* header, const char*, size_t) override {
     return failure(std::string("Cg has no system headers; write #include \"") + header +
-                   "\" (resolved relative to "
-                   "the including file)");
+                   "\" (resolved relative to the including file)");
   }
-
-  void releaseInclude(IncludeResult* result) override { delete result; }
 
   std::optional<Error> error;
 
  private:
-  IncludeResult* keep(const std::string& name, std::string text) {
-    const std::string& stored = texts_.emplace_back(std::move(text));
-    return new IncludeResult(name, stored.data(), stored.size(), nullptr);
-  }
-  IncludeResult* failure(std::string message) {
-    const std::string& stored = texts_.emplace_back(std::move(message));
-    return new IncludeResult("", stored.c_str(), stored.size(), nullptr);
+  Result<Prepared> prepare(const std::string& text, const std::string& name, const char* includer) override {
+    auto prepared = prepare_cg_file(text, name);
+    if (!prepared) {
+      if (!error) error = prepared.error();
+      return std::unexpected(prepared.error());
+    }
+    notes_.insert(notes_.end(), prepared->notes.begin(), prepared->notes.end());
+    notes_.push_back({includer ? includer : "", 0, "#include resolved to " + name});
+    return Prepared{std::move(prepared->text), prepared->pragma_once};
   }
 
   std::vector<CgNote>& notes_;
-  std::vector<SourceFile>& read_;
-  std::set<std::string> once_;
-  std::deque<std::string> texts_;  // stable storage for the returned contents
 };
 
 // Finds lookups whose coordinate glslang truncated implicitly: in Cg the extra

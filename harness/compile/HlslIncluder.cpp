@@ -22,14 +22,20 @@ glslang::TShader::Includer::IncludeResult* HlslIncluder::includeLocal(const char
   std::ostringstream text;
   text << in.rdbuf();
   read_.push_back({name, text.str()});
-  static const std::regex pragma_once(R"((^|\n)[ \t]*#[ \t]*pragma[ \t]+once\b)");
-  if (std::regex_search(read_.back().text, pragma_once)) once_.insert(name);
-  const std::string& stored = texts_.emplace_back(read_.back().text);
+  auto prepared = prepare(read_.back().text, name, includer);
+  if (!prepared) return failure(prepared.error().message);
+  if (prepared->pragma_once) once_.insert(name);
+  const std::string& stored = texts_.emplace_back(std::move(prepared->text));
   return new IncludeResult(name, stored.data(), stored.size(), nullptr);
 }
 
 glslang::TShader::Includer::IncludeResult* HlslIncluder::includeSystem(const char* header, const char* includer, size_t depth) {
   return includeLocal(header, includer, depth);
+}
+
+Result<HlslIncluder::Prepared> HlslIncluder::prepare(const std::string& text, const std::string&, const char*) {
+  static const std::regex pragma_once(R"((^|\n)[ \t]*#[ \t]*pragma[ \t]+once\b)");
+  return Prepared{text, std::regex_search(text, pragma_once)};
 }
 
 glslang::TShader::Includer::IncludeResult* HlslIncluder::failure(std::string message) {

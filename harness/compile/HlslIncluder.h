@@ -3,7 +3,8 @@
 // relative to the including file (`"file"` and `<file>` alike: shaderbed has no system
 // include paths), `#pragma once` honoured. A missing header is an error naming it, at the
 // including file's line (glslang reports it there). Every file read is recorded with its
-// exact text, so the disk compile cache can re-check it on a hit.
+// exact text, so the disk compile cache can re-check it on a hit. The Cg front end
+// (CgFrontEnd.cpp) is the same includer with its own per-file pass: prepare().
 #include <deque>
 #include <set>
 #include <string>
@@ -23,9 +24,17 @@ class HlslIncluder : public glslang::TShader::Includer {
   IncludeResult* includeSystem(const char* header, const char* includer, size_t depth) override;
   void releaseInclude(IncludeResult* result) override { delete result; }
 
- private:
+ protected:
+  struct Prepared {
+    std::string text;          // what the compiler reads
+    bool pragma_once = false;
+  };
+  // A file as read -> what the compiler reads of it; an error fails the #include with
+  // its message. HLSL: the text as it is.
+  virtual Result<Prepared> prepare(const std::string& text, const std::string& name, const char* includer);
   IncludeResult* failure(std::string message);
 
+ private:
   std::vector<SourceFile>& read_;
   std::set<std::string> once_;
   std::deque<std::string> texts_;  // stable storage for the returned contents

@@ -52,31 +52,20 @@ bool matches(const std::string& pattern, const std::string& cell_id) {
 }
 
 Result<std::vector<KnownFailure>> load_expectations(const std::string& path) {
-  toml::table root;
-  try {
-    root = toml::parse_file(path);
-  } catch (const toml::parse_error& e) {
-    return std::unexpected(Error{.message = std::string(e.description()), .file = path,
-                                 .line = int(e.source().begin.line), .column = int(e.source().begin.column),
-                                 .stage = "expectations"});
-  }
+  auto parsed = parse_toml_file(path, "expectations");
+  if (!parsed) return std::unexpected(parsed.error());
+  const toml::table& root = *parsed;
   std::vector<KnownFailure> known;
-  if (auto ok = check_keys(path, root, {"known"}, "the expectations file"); !ok) {
-    Error e = ok.error();
-    e.stage = "expectations";
-    return std::unexpected(e);
-  }
+  if (auto ok = check_keys(path, root, {"known"}, "the expectations file", "expectations"); !ok)
+    return std::unexpected(ok.error());
   const toml::array* entries = root["known"].as_array();
   if (!entries) return known;
   for (const toml::node& node : *entries) {
     const int line = int(node.source().begin.line);
     const toml::table* t = node.as_table();
     if (t) {
-      if (auto ok = check_keys(path, *t, {"cells", "reason"}, "[[known]]"); !ok) {
-        Error e = ok.error();
-        e.stage = "expectations";
-        return std::unexpected(e);
-      }
+      if (auto ok = check_keys(path, *t, {"cells", "reason"}, "[[known]]", "expectations"); !ok)
+        return std::unexpected(ok.error());
     }
     auto cells = t ? (*t)["cells"].value<std::string>() : std::nullopt;
     auto reason = t ? (*t)["reason"].value<std::string>() : std::nullopt;

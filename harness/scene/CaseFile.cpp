@@ -129,11 +129,10 @@ Result<Binding> binding(const std::string& path, const std::string& uniform, con
   if (const toml::table* t = node.as_table()) {
     value = t->get("value");
     if (!value) return std::unexpected(at(path, node, "binding of '" + uniform + "' needs value = ..."));
+    if (auto ok = check_keys(path, *t, {"value", "layout"}, "the binding of '" + uniform + "'"); !ok)
+      return std::unexpected(ok.error());
     for (const auto& [key, knode] : *t) {
-      if (key.str() == "value") continue;
-      if (key.str() != "layout")
-        return std::unexpected(at(path, knode, "unknown key '" + std::string(key.str()) + "' in the binding of '" +
-                                                   uniform + "' (value, layout)"));
+      if (key.str() != "layout") continue;
       const auto layout = knode.value<std::string>();
       if (layout == "row_vector") b.layout = MatrixLayout::row_vector;
       else if (layout == "column_vector") b.layout = MatrixLayout::column_vector;
@@ -194,6 +193,12 @@ Result<TextureBinding> texture_binding(const std::string& path, const fs::path& 
   if (!t)
     return std::unexpected(at(path, node, "texture '" + name + "' must be a table, e.g. { file = \"FILE\", filter = "
                                                                  "\"linear\", address = \"wrap\" }"));
+  if (auto ok = check_keys(path, *t,
+                           {"file", "filter", "min_filter", "mag_filter", "mip_filter", "address", "address_u",
+                            "address_v", "address_w", "border", "mipmaps", "color", "colour"},
+                           "texture '" + name + "'");
+      !ok)
+    return std::unexpected(ok.error());
   TextureBinding b{.line = int(node.source().begin.line), .column = int(node.source().begin.column)};
   SamplerSettingsPatch& s = b.settings;
   const auto filter = [&](const toml::node& n, const std::string& key) {
@@ -246,14 +251,10 @@ Result<TextureBinding> texture_binding(const std::string& path, const fs::path& 
       else if (value.value<std::string>() == "file") b.mipmaps = MipSource::file;
       else return std::unexpected(at(path, value, "texture '" + name + "': mipmaps must be true (generated), false "
                                                                        "or \"file\" (the file's own levels)"));
-    } else if (key == "color" || key == "colour") {
+    } else {   // color / colour (check_keys allowed no other key)
       auto srgb = word<bool>(path, value, key, {{"srgb", true}, {"linear", false}});
       if (!srgb) return std::unexpected(srgb.error());
       s.srgb = *srgb;
-    } else {
-      return std::unexpected(at(path, value, "texture '" + name + "': unknown key '" + key +
-                                                 "' (file, filter, min_filter, mag_filter, mip_filter, address, "
-                                                 "address_u, address_v, address_w, border, mipmaps, color)"));
     }
   }
   // Mipmaps filter between levels as the texels are filtered, unless the entry says how.
@@ -321,14 +322,9 @@ std::filesystem::path shader_root_of(const std::string& case_path) {
 }
 
 Result<Case> load_case(const std::string& path) {
-  toml::table root;
-  try {
-    root = toml::parse_file(path);
-  } catch (const toml::parse_error& e) {
-    return std::unexpected(Error{.message = std::string(e.description()), .file = path,
-                                 .line = int(e.source().begin.line), .column = int(e.source().begin.column),
-                                 .stage = "case"});
-  }
+  auto parsed = parse_toml_file(path, "case");
+  if (!parsed) return std::unexpected(parsed.error());
+  const toml::table& root = *parsed;
   Case c;
   c.path = path;
   c.name = fs::path(path).stem().string();
@@ -388,6 +384,11 @@ Result<Case> load_case(const std::string& path) {
         return std::unexpected(at(path, lnode, "expected { vertex = \"FILE\", fragment = \"FILE\" }"));
       ShaderFiles shader_files{(shader_root / *vs).lexically_normal().string(),
                                (shader_root / *fsrc).lexically_normal().string(), int(lnode.source().begin.line)};
+      if (auto ok = check_keys(path, *files,
+                               {"vertex", "fragment", "vertex_entry", "fragment_entry", "technique", "pass"},
+                               "the " + std::string(lname.str()) + " shaders");
+          !ok)
+        return std::unexpected(ok.error());
       for (const auto& [key, value] : *files) {
         const std::string k(key.str());
         if (k == "vertex" || k == "fragment") continue;
@@ -400,10 +401,6 @@ Result<Case> load_case(const std::string& path) {
           (k == "technique" ? shader_files.technique : shader_files.pass) = *chosen;
           continue;
         }
-        if (k != "vertex_entry" && k != "fragment_entry")
-          return std::unexpected(at(path, value, "unknown key '" + k + "' in the " + std::string(lname.str()) +
-                                                     " shaders (vertex, fragment, vertex_entry, fragment_entry, "
-                                                     "technique, pass)"));
         const auto entry = value.value<std::string>();
         if (!entry || entry->empty()) return std::unexpected(at(path, value, k + " must name a function"));
         if (*lang == Language::glsl && *entry != "main")

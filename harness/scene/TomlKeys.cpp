@@ -34,8 +34,18 @@ std::string closest_key(std::string_view key, std::initializer_list<std::string_
   return best_distance <= std::max<size_t>(1, key.size() / 3) ? best : "";
 }
 
+Result<toml::table> parse_toml_file(const std::string& path, const std::string& stage) {
+  try {
+    return toml::parse_file(path);
+  } catch (const toml::parse_error& e) {
+    return std::unexpected(Error{.message = std::string(e.description()), .file = path,
+                                 .line = int(e.source().begin.line), .column = int(e.source().begin.column),
+                                 .stage = stage});
+  }
+}
+
 Result<void> check_keys(const std::string& path, const toml::table& table, std::initializer_list<std::string_view> known,
-                        const std::string& where) {
+                        const std::string& where, const std::string& stage) {
   for (const auto& [key, node] : table) {
     const std::string_view k = key.str();
     if (std::find(known.begin(), known.end(), k) != known.end()) continue;
@@ -48,7 +58,7 @@ Result<void> check_keys(const std::string& path, const toml::table& table, std::
     }
     const auto& src = key.source().begin.line ? key.source() : node.source();
     return std::unexpected(Error{.message = message, .file = path, .line = int(src.begin.line),
-                                 .column = int(src.begin.column), .stage = "case"});
+                                 .column = int(src.begin.column), .stage = stage});
   }
   return {};
 }

@@ -1,7 +1,7 @@
 #pragma once
-// Strict TOML tables: a key a table does not know is an error at its line and column,
-// with the closest known key suggested ("did you mean 'tolerance'?"), so a typo in a case
-// file is never silently ignored.
+// Strict TOML files (case files, expectations): a parse error or a key a table does not
+// know is an error at its line and column, with the closest known key suggested ("did you
+// mean 'tolerance'?"), so a typo is never silently ignored.
 #include <initializer_list>
 #include <string>
 #include <string_view>
@@ -12,9 +12,12 @@
 
 namespace shaderbed {
 
+// The parsed file; a syntax error is an Error at its line and column in `stage`.
+Result<toml::table> parse_toml_file(const std::string& path, const std::string& stage);
+
 // `where` names the table in the message ("the case", "[tolerance]", ...).
 Result<void> check_keys(const std::string& path, const toml::table& table, std::initializer_list<std::string_view> known,
-                        const std::string& where);
+                        const std::string& where, const std::string& stage = "case");
 
 // The known key nearest to `key` by edit distance, or "" when none is close.
 std::string closest_key(std::string_view key, std::initializer_list<std::string_view> known);

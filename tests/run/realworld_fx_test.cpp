@@ -27,11 +27,7 @@ RunOptions quick(const std::string& cases_dir, const std::string& case_name) {
 TEST(RealWorldFx, SdkStyleEffectPassesOnEveryHlslPath) {
   auto report = run_suite(quick((kRealWorld / "cases").string(), "fx_blinn_phong"));
   ASSERT_TRUE(report) << report.error().to_string();
-  std::set<std::string> paths;
-  for (const CellResult& r : report->results) {
-    EXPECT_EQ(r.status, "pass") << r.id() << ": " << r.message;
-    paths.insert(r.backend + "/" + r.path);
-  }
+  const std::set<std::string> paths = test::paths_all_with_status(*report, "pass");
   EXPECT_EQ(paths, (std::set<std::string>{"vulkan/spirv", "gl/spirv", "gl/cross"}));
   EXPECT_EQ(report->results.size(), 6u);
 }

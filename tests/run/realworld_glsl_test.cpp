@@ -38,11 +38,7 @@ class RealWorldGlsl : public ::testing::TestWithParam<std::string> {};
 TEST_P(RealWorldGlsl, TheCorrectPortPassesOnEveryPath) {
   auto report = run_cases({GetParam()});
   ASSERT_TRUE(report) << report.error().to_string();
-  std::set<std::string> paths;
-  for (const CellResult& r : report->results) {
-    EXPECT_EQ(r.status, "pass") << r.id() << ": " << r.message;
-    paths.insert(r.backend + "/" + r.path);
-  }
+  const std::set<std::string> paths = test::paths_all_with_status(*report, "pass");
   EXPECT_EQ(paths, kEveryGlslPath);
   EXPECT_EQ(report->results.size(), 8u);
 }
@@ -50,13 +46,8 @@ TEST_P(RealWorldGlsl, TheCorrectPortPassesOnEveryPath) {
 TEST_P(RealWorldGlsl, ThePlantedBugFailsOnEveryPath) {
   auto report = run_cases({GetParam() + "_bug"});
   ASSERT_TRUE(report) << report.error().to_string();
-  std::set<std::string> paths;
-  for (const CellResult& r : report->results) {
-    EXPECT_EQ(r.status, "fail") << r.id() << ": " << r.message;
-    EXPECT_FALSE(r.message.empty()) << r.id();
-    paths.insert(r.backend + "/" + r.path);
-  }
-  EXPECT_EQ(paths, kEveryGlslPath);
+  EXPECT_EQ(test::paths_all_with_status(*report, "fail"), kEveryGlslPath);
+  for (const CellResult& r : report->results) EXPECT_FALSE(r.message.empty()) << r.id();
 }
 
 INSTANTIATE_TEST_SUITE_P(Styles, RealWorldGlsl, ::testing::Values("glsl110_blinn_phong", "glsl330_blinn_phong"));

@@ -45,6 +45,22 @@ void HostBuffer::write(std::span<const std::byte> bytes, VkDeviceSize offset) co
   std::memcpy(mapped_ + offset, bytes.data(), std::min<VkDeviceSize>(bytes.size(), size_ - offset));
 }
 
+Result<OwnedMemory> bind_device_memory(const VulkanDevice& device, VkImage image) {
+  VkDevice dev = device.device();
+  VkMemoryRequirements req;
+  vkGetImageMemoryRequirements(dev, image, &req);
+  auto type = device.memory_type(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+  if (!type) return std::unexpected(type.error());
+  const VkMemoryAllocateInfo alloc{.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO,
+                                   .allocationSize = req.size,
+                                   .memoryTypeIndex = *type};
+  VkDeviceMemory memory;
+  if (auto ok = check(vkAllocateMemory(dev, &alloc, nullptr, &memory), "vkAllocateMemory"); !ok) return std::unexpected(ok.error());
+  OwnedMemory owned(dev, memory);
+  if (auto ok = check(vkBindImageMemory(dev, image, memory, 0), "vkBindImageMemory"); !ok) return std::unexpected(ok.error());
+  return owned;
+}
+
 Result<DeviceImage> DeviceImage::create(const VulkanDevice& device, VkFormat format, VkExtent2D extent,
                                         VkImageUsageFlags usage, VkImageAspectFlags aspect) {
   VkDevice dev = device.device();
@@ -64,17 +80,9 @@ Result<DeviceImage> DeviceImage::create(const VulkanDevice& device, VkFormat for
   if (auto ok = check(vkCreateImage(dev, &info, nullptr, &image), "vkCreateImage"); !ok) return std::unexpected(ok.error());
   out.image_ = OwnedImage(dev, image);
 
-  VkMemoryRequirements req;
-  vkGetImageMemoryRequirements(dev, image, &req);
-  auto type = device.memory_type(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-  if (!type) return std::unexpected(type.error());
-  const VkMemoryAllocateInfo alloc{.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO,
-                                   .allocationSize = req.size,
-                                   .memoryTypeIndex = *type};
-  VkDeviceMemory memory;
-  if (auto ok = check(vkAllocateMemory(dev, &alloc, nullptr, &memory), "vkAllocateMemory"); !ok) return std::unexpected(ok.error());
-  out.memory_ = OwnedMemory(dev, memory);
-  if (auto ok = check(vkBindImageMemory(dev, image, memory, 0), "vkBindImageMemory"); !ok) return std::unexpected(ok.error());
+  auto memory = bind_device_memory(device, image);
+  if (!memory) return std::unexpected(memory.error());
+  out.memory_ = std::move(*memory);
 
   const VkImageViewCreateInfo view_info{.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,
                                         .image = image,

@@ -29,6 +29,9 @@ class HostBuffer {
   std::byte* mapped_ = nullptr;  // mapped for the buffer's lifetime; unmapped by vkFreeMemory
 };
 
+// Device-local memory allocated for `image` and bound to it.
+Result<OwnedMemory> bind_device_memory(const VulkanDevice& device, VkImage image);
+
 class DeviceImage {
  public:
   static Result<DeviceImage> create(const VulkanDevice& device, VkFormat format, VkExtent2D extent,

@@ -298,19 +298,9 @@ Result<DrawTextures> DrawTextures::create(const VulkanDevice& device, const std:
           return std::unexpected(ok.error());
         image.image = OwnedImage(dev, handle);
 
-        VkMemoryRequirements req;
-        vkGetImageMemoryRequirements(dev, handle, &req);
-        auto type = device.memory_type(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-        if (!type) return std::unexpected(type.error());
-        const VkMemoryAllocateInfo alloc{.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO,
-                                         .allocationSize = req.size,
-                                         .memoryTypeIndex = *type};
-        VkDeviceMemory memory;
-        if (auto ok = check(vkAllocateMemory(dev, &alloc, nullptr, &memory), "vkAllocateMemory"); !ok)
-          return std::unexpected(ok.error());
-        image.memory = OwnedMemory(dev, memory);
-        if (auto ok = check(vkBindImageMemory(dev, handle, memory, 0), "vkBindImageMemory"); !ok)
-          return std::unexpected(ok.error());
+        auto memory = bind_device_memory(device, handle);
+        if (!memory) return std::unexpected(memory.error());
+        image.memory = std::move(*memory);
 
         const VkImageViewCreateInfo view_info{
             .sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,
