@@ -69,6 +69,20 @@ inline PixelError pixel_error(const float* r, const double* q) {
   return {e, mismatch};
 }
 
+// How far a channel error is into its tolerance: d / (max_abs + max_rel |reference|);
+// over 1 fails. A zero tolerance passes only an exact match.
+inline double tolerance_share(double d, double reference, double max_abs, double max_rel) {
+  const double allowed = max_abs + (std::isfinite(reference) ? max_rel * std::abs(reference) : 0.0);
+  if (allowed > 0) return d / allowed;
+  return d == 0 ? 0.0 : kInf;
+}
+
+template <typename Q>
+inline double pixel_share(const double* d, const Q* q, double max_abs, double max_rel) {
+  return std::max({tolerance_share(d[0], q[0], max_abs, max_rel), tolerance_share(d[1], q[1], max_abs, max_rel),
+                   tolerance_share(d[2], q[2], max_abs, max_rel)});
+}
+
 inline bool finite_rgb(const float* p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
 inline bool finite_rgb(const double* p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
 
@@ -186,6 +200,7 @@ Comparison compare_images(const Image& render, const ReferenceImage& ref, const 
   // Drawn pixels whose finite colour error is over the threshold, and the largest such error.
   size_t interior_over = 0, band_over = 0;
   double interior_finite_max = 0, band_finite_max = 0;
+  double interior_share = 0;   // the largest d / allowed over the interior
   // Uniform-render detection and the reference's interior range (for the "blank output" note).
   const float* first_drawn = nullptr;
   bool uniform = true;
@@ -242,20 +257,22 @@ Comparison compare_images(const Image& render, const ReferenceImage& ref, const 
           const PixelError pe{std::max({d[0], d[1], d[2]}), unequal_nonfinite};
           if (pe.nonfinite_mismatch) ++out.nonfinite_mismatch;
           out.interior.max_abs = std::max(out.interior.max_abs, pe.error);
+          const double share = pe.nonfinite_mismatch ? kInf : pixel_share(d, q, t.interior_max_abs, t.interior_max_rel);
+          interior_share = std::max(interior_share, share);
           if (std::isfinite(pe.error)) {
             interior_sq += pe.error * pe.error;
             ++interior_finite;
             interior_finite_max = std::max(interior_finite_max, pe.error);
-            if (pe.error > t.interior_max_abs) ++interior_over;
+            if (share > 1) ++interior_over;
           }
-          if (!(pe.error <= t.interior_max_abs)) ++out.interior.bad_pixels;
+          if (!(share <= 1)) ++out.interior.bad_pixels;
           break;
         }
         case PixelClass::silhouette: {
           ++out.silhouette.pixels;
           // Best match over the 3x3 neighbourhood: same coverage, and if drawn, the
           // closest colour. A one-pixel edge shift is not an error; a wrong colour is.
-          double best = kInf;
+          double best = kInf, best_share = kInf;
           bool any_drawn_neighbour = false, reference_matched = false;
           const bool check_reverse = ref.coverage[i] && !finite_rgb(q);
           for (int dy = -1; dy <= 1; ++dy)
@@ -269,7 +286,17 @@ Comparison compare_images(const Image& render, const ReferenceImage& ref, const 
                 reference_matched = reference_matched || !pixel_error(&render.rgba[j * 4], q).nonfinite_mismatch;
               }
               if ((ref.coverage[j] != 0) != drawn) continue;
-              best = std::min(best, drawn ? pixel_error(r, &ref.rgba[j * 4]).error : 0.0);
+              if (!drawn) {
+                best = best_share = 0;
+                continue;
+              }
+              const double* qj = &ref.rgba[j * 4];
+              const PixelError pj = pixel_error(r, qj);
+              best = std::min(best, pj.error);
+              if (!std::isfinite(pj.error)) continue;
+              double dj[3];
+              for (int c = 0; c < 3; ++c) dj[c] = std::isfinite(r[c] - qj[c]) ? std::abs(r[c] - qj[c]) : 0.0;
+              best_share = std::min(best_share, pixel_share(dj, qj, t.silhouette_max_abs, t.silhouette_max_rel));
             }
           // Drawn and no covered neighbour agrees on finiteness (errors are finite
           // between finite values): a non-finite mismatch, as is a reference NaN/Inf
@@ -281,10 +308,10 @@ Comparison compare_images(const Image& render, const ReferenceImage& ref, const 
             band_sq += best * best;
             ++band_finite;
             band_finite_max = std::max(band_finite_max, best);
-            if (best > t.silhouette_max_abs) ++band_over;
+            if (best_share > 1) ++band_over;
           }
           out.silhouette.max_abs = std::max(out.silhouette.max_abs, reverse ? kInf : best);
-          if (!(best <= t.silhouette_max_abs) || reverse) ++out.silhouette.bad_pixels;
+          if (!(best_share <= 1) || reverse) ++out.silhouette.bad_pixels;
           break;
         }
       }
@@ -323,12 +350,15 @@ Comparison compare_images(const Image& render, const ReferenceImage& ref, const 
                                   out.nonfinite_mismatch));
   if (!out.blank) {
     if (out.coverage_mismatch) reasons.push_back(fmt::format("coverage differs at {} pixels", out.coverage_mismatch));
+    const auto bound = [](double max_abs, double max_rel) {
+      return max_rel > 0 ? fmt::format("{:.3g} + {:.3g}|ref|", max_abs, max_rel) : fmt::format("{:.3g}", max_abs);
+    };
     if (interior_over)
-      reasons.push_back(fmt::format("{} interior pixels over {:.3g} (max {:.3g})", interior_over, t.interior_max_abs,
-                                    interior_finite_max));
+      reasons.push_back(fmt::format("{} interior pixels over {} (max {:.3g})", interior_over,
+                                    bound(t.interior_max_abs, t.interior_max_rel), interior_finite_max));
     if (band_over)
-      reasons.push_back(fmt::format("{} silhouette pixels over {:.3g} (max {:.3g})", band_over, t.silhouette_max_abs,
-                                    band_finite_max));
+      reasons.push_back(fmt::format("{} silhouette pixels over {} (max {:.3g})", band_over,
+                                    bound(t.silhouette_max_abs, t.silhouette_max_rel), band_finite_max));
   }
   if (!reasons.empty() && out.uniform) {
     bool reference_varies = false;
@@ -339,6 +369,7 @@ Comparison compare_images(const Image& render, const ReferenceImage& ref, const 
   }
   for (const std::string& s : reasons) out.reason += (out.reason.empty() ? "" : "; ") + s;
   out.pass = out.reason.empty();
+  out.interior_tolerance_share = interior_share;
 
   const bool threshold_independent = out.interior.pixels == 0 || out.blank || out.degenerate ||
                                      out.nonfinite_mismatch || out.coverage_mismatch;
@@ -366,6 +397,7 @@ CellMetrics cell_metrics(const Comparison& c) {
   m.expected_area = c.expected_area;
   m.min_passing_interior = c.min_passing_interior;
   m.min_passing_silhouette = c.min_passing_silhouette;
+  m.tolerance_share = c.interior_tolerance_share;
   m.render_values = c.render_values;
   m.reference_values = c.reference_values;
   return m;

@@ -42,9 +42,14 @@ struct RegionMetrics {
   double rmse = 0;           // over the finite errors
 };
 
+// A channel passes when |render - reference| <= max_abs + max_rel * |reference|: an
+// absolute floor near black plus a part relative to the pixel's magnitude (differential
+// cases judge one fp32 render against another, whose rounding grows with the value).
 struct ComparisonThresholds {
   double interior_max_abs = 0;
   double silhouette_max_abs = 0;
+  double interior_max_rel = 0;
+  double silhouette_max_rel = 0;
 };
 
 // How many covered pixels a render (or the reference) may differ by from the reference
@@ -75,6 +80,9 @@ struct Comparison {
   // non-finite mismatch, blank/degenerate, size, empty reference).
   double min_passing_interior = 0;
   double min_passing_silhouette = 0;
+  // The largest interior |render - reference| / (max_abs + max_rel |reference|): over 1
+  // fails; with max_rel = 0 it is max_abs / the threshold.
+  double interior_tolerance_share = 0;
   ValueCounts render_values;       // over the render's drawn pixels
   ValueCounts reference_values;    // over the reference's covered pixels
   bool pass = false;

@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include "report/CellExplanation.h"
+
 namespace shaderbed {
 namespace {
 
@@ -46,6 +48,12 @@ bool print_problems(const RunReport& report, std::FILE* out, bool blank_line_fir
             fmt::print(out, "  {}: {}\n", where(r), r.message.empty() ? "failed" : first_line(r.message));
             fmt::print(out, "      attribution: {}{}\n", r.attribution.empty() ? "none" : r.attribution,
                        r.attribution_reason.empty() ? "" : " - " + r.attribution_reason);
+            if (const std::string best = best_explanation(r); !best.empty())
+              fmt::print(out, "      explained: {}\n", best);
+            else if (!r.explanations.empty())
+              fmt::print(out, "      no convention explains it; closest: {}\n", r.explanations.front().summary);
+            if (const std::string against = judged_against(r); !against.empty())
+              fmt::print(out, "      judged against: {}\n", against);
             if (!r.reference_note.empty()) fmt::print(out, "      reference: {}\n", r.reference_note);
             print_images(r, out);
           });

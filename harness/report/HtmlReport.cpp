@@ -15,6 +15,7 @@
 
 #include "core/AtomicFile.h"
 #include "core/Fnv1a.h"
+#include "report/CellExplanation.h"
 #include "report/Markup.h"
 #include "report/SummaryMatrix.h"
 
@@ -272,8 +273,22 @@ class Writer {
       h += fmt::format("<p class=\"known\"><b>known failure</b>{}</p>",
                        r.known_reason.empty() ? "" : ": " + escape(r.known_reason));
     if (!r.reference_note.empty()) h += fmt::format("<p class=\"note\"><b>reference</b>: {}</p>", escape(r.reference_note));
+    const std::string against = judged_against(r);
+    if (!against.empty()) h += fmt::format("<p class=\"note\"><b>judged against</b>: {}</p>", escape(against));
+    if (r.reference.is_reference) h += "<p class=\"note\"><b>this render is the reference</b> of its case</p>";
+    // Which convention explains a failure: each fit with its residual, the fitting ones first.
+    if (!r.explanations.empty()) {
+      h += "<table class=\"kv\"><tr><th>convention</th><th>fits</th><th>residual</th><th>rmse</th></tr>";
+      for (const Explanation& e : r.explanations)
+        h += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>", escape(e.summary),
+                         e.fits ? "<b>yes</b>" : "no", sci(e.residual), sci(e.rmse));
+      h += "</table>";
+    }
 
-    const std::string imgs = image(a.reference_png, "reference", "reference") + image(a.render_png, "render", "render") +
+    const std::string reference_caption = r.reference.kind == "render"   ? "original (" + escape(r.reference.label) + ")"
+                                          : r.reference.kind == "images" ? std::string("stored image")
+                                                                         : std::string("reference");
+    const std::string imgs = image(a.reference_png, "reference", reference_caption) + image(a.render_png, "render", "render") +
                              image(a.error_png, "error heat map", "error (threshold = mid grey)");
     if (!imgs.empty()) h += "<div class=\"imgs\">" + imgs + "</div>";
     // Every render of this case/variant/shape, for failing cells: which ones agree.
@@ -297,10 +312,12 @@ class Writer {
     };
     if (r.status == "pass" || r.status == "fail") {
       row("interior", fmt::format("max {} &nbsp; threshold {} &nbsp; smallest passing {} &nbsp; rmse {} &nbsp; psnr {} dB",
-                                  sci(m.max_abs), sci(r.interior_threshold), sci(m.min_passing_interior), sci(m.rmse),
-                                  db(m.psnr)));
+                                  sci(m.max_abs), escape(tolerance_text(r.interior_threshold, r.interior_threshold_rel)),
+                                  sci(m.min_passing_interior), sci(m.rmse), db(m.psnr)));
       row("silhouette", fmt::format("max {} &nbsp; threshold {} &nbsp; smallest passing {}", sci(m.silhouette_max_abs),
-                                    sci(r.silhouette_threshold), sci(m.min_passing_silhouette)));
+                                    escape(tolerance_text(r.silhouette_threshold, r.silhouette_threshold_rel)),
+                                    sci(m.min_passing_silhouette)));
+      if (!r.tolerance_reason.empty()) row("tolerance", escape(r.tolerance_reason));
       row("pixels", fmt::format("{} bad, {} NaN/Inf in the render, {} NaN/Inf mismatches, {} coverage mismatches",
                                 m.bad_pixels, m.nonfinite, m.nonfinite_mismatch, m.coverage_mismatch));
       row("coverage", fmt::format("{} drawn, {} in the reference, {:.1f} expected; {} interior, {} silhouette",

@@ -40,6 +40,20 @@ ojson cell_json(const CellResult& r) {
   cell["attribution"] = {{"verdict", r.attribution}, {"reason", r.attribution_reason}};
   cell["known_failure"] = {{"known", r.known_failure}, {"reason", r.known_reason}};
   if (!r.reference_note.empty()) cell["reference_note"] = r.reference_note;
+  cell["reference"] = {{"kind", r.reference.kind},
+                       {"label", r.reference.label},
+                       {"is_reference", r.reference.is_reference},
+                       {"toolchain_note", r.reference.toolchain_note}};
+  ojson explanations = ojson::array();
+  for (const Explanation& e : r.explanations)
+    explanations.push_back({{"name", e.name},
+                            {"description", e.description},
+                            {"summary", e.summary},
+                            {"residual", json_number(e.residual)},
+                            {"rmse", json_number(e.rmse)},
+                            {"pixels", e.pixels},
+                            {"fits", e.fits}});
+  cell["explanations"] = std::move(explanations);
   cell["metrics"] = {{"max_abs", json_number(m.max_abs)},
                      {"rmse", json_number(m.rmse)},
                      {"psnr", json_number(m.psnr)},
@@ -49,6 +63,7 @@ ojson cell_json(const CellResult& r) {
                      {"coverage_mismatch", m.coverage_mismatch},
                      {"silhouette_max_abs", json_number(m.silhouette_max_abs)},
                      {"min_passing", {{"interior", json_number(m.min_passing_interior)}, {"silhouette", json_number(m.min_passing_silhouette)}}},
+                     {"tolerance_share", json_number(m.tolerance_share)},
                      {"coverage",
                       {{"interior_pixels", m.interior_pixels},
                        {"silhouette_pixels", m.silhouette_pixels},
@@ -58,6 +73,9 @@ ojson cell_json(const CellResult& r) {
                      {"values", {{"render", value_counts(m.render_values)}, {"reference", value_counts(m.reference_values)}}}};
   cell["tolerance"] = {{"interior", json_number(r.interior_threshold)},
                        {"silhouette", json_number(r.silhouette_threshold)},
+                       {"interior_rel", json_number(r.interior_threshold_rel)},
+                       {"silhouette_rel", json_number(r.silhouette_threshold_rel)},
+                       {"reason", r.tolerance_reason},
                        {"lut", {{"bound", json_number(r.lut_bound)}, {"derivation", r.lut_derivation}}}};
   ojson times = ojson::object();
   for (const auto& [stage, ms] : r.time_ms) times[stage] = json_number(ms);
@@ -73,10 +91,12 @@ ojson cell_json(const CellResult& r) {
                     {"device", interval(r.gpu.device)},
                     {"wall", interval(r.gpu.wall)}};
   cell["spirv_hash"] = {{"vertex", r.vertex_spirv_hash}, {"fragment", r.fragment_spirv_hash}};
+  cell["scene_hash"] = r.scene_hash;
   cell["instructions"] = {{"vertex", r.vertex_instructions}, {"fragment", r.fragment_instructions}};
   cell["artefacts"] = {{"render_exr", a.render_exr},         {"render_png", a.render_png},
                        {"error_exr", a.error_exr},           {"error_png", a.error_png},
-                       {"reference_png", a.reference_png},   {"vertex_spirv", a.vertex_spirv},
+                       {"reference_png", a.reference_png},   {"stored_exr", a.stored_exr},
+                       {"vertex_spirv", a.vertex_spirv},
                        {"fragment_spirv", a.fragment_spirv}, {"vertex_cross_glsl", a.vertex_cross_glsl},
                        {"fragment_cross_glsl", a.fragment_cross_glsl}};
   if (!a.render_exr.empty()) cell["image"] = a.render_exr;   // schema 1 name, kept for old readers
@@ -186,6 +206,30 @@ CellResult read_cell(const json& c, const std::string& p) {
     read(*k, "reason", child(p, "known_failure"), r.known_reason);
   }
   read(c, "reference_note", p, r.reference_note);
+  if (const json* s = object_at(c, "reference", p)) {
+    const std::string sp = child(p, "reference");
+    read(*s, "kind", sp, r.reference.kind);
+    read(*s, "label", sp, r.reference.label);
+    read(*s, "is_reference", sp, r.reference.is_reference);
+    read(*s, "toolchain_note", sp, r.reference.toolchain_note);
+  }
+  if (const json* list = member(c, "explanations")) {
+    if (!list->is_array()) throw BadField{child(p, "explanations"), "expected an array"};
+    for (size_t i = 0; i < list->size(); ++i) {
+      const std::string ep = child(child(p, "explanations"), std::to_string(i));
+      const json& e = (*list)[i];
+      if (!e.is_object()) throw BadField{ep, "expected an object"};
+      Explanation x;
+      read(e, "name", ep, x.name);
+      read(e, "description", ep, x.description);
+      read(e, "summary", ep, x.summary);
+      read(e, "residual", ep, x.residual);
+      read(e, "rmse", ep, x.rmse);
+      read(e, "pixels", ep, x.pixels);
+      read(e, "fits", ep, x.fits);
+      r.explanations.push_back(std::move(x));
+    }
+  }
   if (const json* m = object_at(c, "metrics", p)) {
     const std::string mp = child(p, "metrics");
     CellMetrics& x = r.metrics;
@@ -197,6 +241,7 @@ CellResult read_cell(const json& c, const std::string& p) {
     read(*m, "nonfinite_mismatch", mp, x.nonfinite_mismatch);
     read(*m, "coverage_mismatch", mp, x.coverage_mismatch);
     read(*m, "silhouette_max_abs", mp, x.silhouette_max_abs);
+    read(*m, "tolerance_share", mp, x.tolerance_share);
     if (const json* mp2 = object_at(*m, "min_passing", mp)) {
       read(*mp2, "interior", child(mp, "min_passing"), x.min_passing_interior);
       read(*mp2, "silhouette", child(mp, "min_passing"), x.min_passing_silhouette);
@@ -218,6 +263,9 @@ CellResult read_cell(const json& c, const std::string& p) {
     const std::string tp = child(p, "tolerance");
     read(*t, "interior", tp, r.interior_threshold);
     read(*t, "silhouette", tp, r.silhouette_threshold);
+    read(*t, "interior_rel", tp, r.interior_threshold_rel);
+    read(*t, "silhouette_rel", tp, r.silhouette_threshold_rel);
+    read(*t, "reason", tp, r.tolerance_reason);
     if (const json* lut = object_at(*t, "lut", tp)) {
       read(*lut, "bound", child(tp, "lut"), r.lut_bound);
       read(*lut, "derivation", child(tp, "lut"), r.lut_derivation);
@@ -246,6 +294,7 @@ CellResult read_cell(const json& c, const std::string& p) {
     read(*n, "vertex", child(p, "instructions"), r.vertex_instructions);
     read(*n, "fragment", child(p, "instructions"), r.fragment_instructions);
   }
+  read(c, "scene_hash", p, r.scene_hash);
   if (const json* h = object_at(c, "spirv_hash", p)) {
     read(*h, "vertex", child(p, "spirv_hash"), r.vertex_spirv_hash);
     read(*h, "fragment", child(p, "spirv_hash"), r.fragment_spirv_hash);
@@ -258,6 +307,7 @@ CellResult read_cell(const json& c, const std::string& p) {
     read(*a, "error_exr", ap, x.error_exr);
     read(*a, "error_png", ap, x.error_png);
     read(*a, "reference_png", ap, x.reference_png);
+    read(*a, "stored_exr", ap, x.stored_exr);
     read(*a, "vertex_spirv", ap, x.vertex_spirv);
     read(*a, "fragment_spirv", ap, x.fragment_spirv);
     read(*a, "vertex_cross_glsl", ap, x.vertex_cross_glsl);

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "core/AtomicFile.h"
+#include "report/CellExplanation.h"
 #include "report/Markup.h"
 
 namespace shaderbed {
@@ -37,9 +38,10 @@ std::string attribution(const CellResult& r) {
 std::string metric_summary(const CellResult& r) {
   const CellMetrics& m = r.metrics;
   std::string out = fmt::format("max_abs {} (threshold {}, smallest passing {}), silhouette {} (threshold {}, smallest passing {}), rmse {}",
-                                sci(m.max_abs), sci(r.interior_threshold), sci(m.min_passing_interior),
-                                sci(m.silhouette_max_abs), sci(r.silhouette_threshold), sci(m.min_passing_silhouette),
-                                sci(m.rmse));
+                                sci(m.max_abs), tolerance_text(r.interior_threshold, r.interior_threshold_rel),
+                                sci(m.min_passing_interior), sci(m.silhouette_max_abs),
+                                tolerance_text(r.silhouette_threshold, r.silhouette_threshold_rel),
+                                sci(m.min_passing_silhouette), sci(m.rmse));
   if (m.nonfinite_mismatch) out += fmt::format(", {} NaN/Inf mismatches", m.nonfinite_mismatch);
   if (m.coverage_mismatch) out += fmt::format(", {} coverage mismatches", m.coverage_mismatch);
   return out;
@@ -58,7 +60,11 @@ std::string details(const CellResult& r) {
     out += fmt::format("{} values: {} NaN, {} +Inf, {} -Inf, {} negative, {} above one\n", name, v->nan, v->pos_inf,
                        v->neg_inf, v->negative, v->above_one);
   if (!r.lut_derivation.empty()) out += fmt::format("LUT bound {} ({})\n", sci(r.lut_bound), r.lut_derivation);
+  if (!r.tolerance_reason.empty()) out += "tolerance: " + r.tolerance_reason + "\n";
   out += attribution(r) + "\n";
+  for (const Explanation& e : r.explanations)
+    out += fmt::format("convention {}: {} (residual {}, rmse {}, {} pixels)\n", e.fits ? "fits" : "does not fit",
+                       e.summary, sci(e.residual), sci(e.rmse), e.pixels);
   return out;
 }
 
@@ -137,7 +143,9 @@ std::string to_junit(const RunReport& report) {
                          escape(details(r)));
       } else if (r.status != "pass") {
         std::string message = r.message.empty() ? "" : first_line(r.message) + "; ";
+        if (const std::string best = best_explanation(r); !best.empty()) message += "explained: " + best + "; ";
         message += metric_summary(r) + "; " + attribution(r);
+        if (const std::string against = judged_against(r); !against.empty()) message += "; judged against " + against;
         x += fmt::format("      <failure type=\"{}\" message=\"{}\">{}</failure>\n",
                          escape(r.attribution.empty() ? "fail" : r.attribution, true), escape(message, true),
                          escape(details(r)));

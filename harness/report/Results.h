@@ -37,12 +37,16 @@ struct CellMetrics {
   // The smallest thresholds that would have passed this cell (what tightening can reach).
   double min_passing_interior = 0;
   double min_passing_silhouette = 0;
+  // The largest interior error as a share of its tolerance (max_abs + max_rel |reference|
+  // per channel): over 1 fails. 0 in files from before it existed.
+  double tolerance_share = 0;
   ValueCounts render_values;
   ValueCounts reference_values;
 };
 
 struct CellArtefacts {                // paths under the run's --out folder ("" = not written)
   std::string render_exr, render_png, error_exr, error_png, reference_png;
+  std::string stored_exr;                              // run --save-images: the image later runs compare with
   std::string vertex_spirv, fragment_spirv;            // disassembly (.spvasm)
   std::string vertex_cross_glsl, fragment_cross_glsl;  // SPIRV-Cross output
 };
@@ -67,6 +71,26 @@ struct GpuTiming {
   TimingInterval wall;      // CPU wall clock per repeat
 };
 
+// One named explanation of a failing cell's difference (compare/ConventionFit.h): the
+// render fitted against the reference under a convention, and how well it fits.
+struct Explanation {
+  std::string name;          // stable id: "constant_factor", "extra_n_dot_l", ...
+  std::string description;   // "× π (1/π normalisation)"
+  double residual = 0;       // max |render - explained reference| over the fitted pixels
+  double rmse = 0;
+  size_t pixels = 0;         // pixels the fit used
+  bool fits = false;         // within the interior tolerance
+  std::string summary;       // the line a user reads: "matches the reference × π (1/π normalisation) to 2e-6"
+};
+
+// What a cell was judged against.
+struct ReferenceSource {
+  std::string kind;          // "model", "render" (the original on one backend/path) or "images" (a stored run)
+  std::string label;         // "phong (per pixel)", "hlsl vulkan/spirv", "images in DIR"
+  bool is_reference = false; // this cell's own render is the reference of its group
+  std::string toolchain_note;   // images: how the stored run's toolchain differs from this one ("" = same)
+};
+
 struct CellResult {
   std::string case_name, variant, language, backend, path, shape;
   std::string status;               // "pass", "fail", "error" or "skipped" (the path does not apply; message says why)
@@ -82,8 +106,14 @@ struct CellResult {
   // models read no texture); "" when it saw everything the draw did.
   std::string reference_note;
   CellMetrics metrics;
-  double interior_threshold = 0;    // the case's tolerance
+  double interior_threshold = 0;    // the case's tolerance (absolute part)
   double silhouette_threshold = 0;
+  double interior_threshold_rel = 0;     // relative part: a channel may differ by abs + rel |reference|
+  double silhouette_threshold_rel = 0;
+  std::string tolerance_reason;          // why the interior tolerance is what it is
+  ReferenceSource reference;
+  // Failures: the convention fits, the ones that fit first (best first); empty for passes.
+  std::vector<Explanation> explanations;
   double lut_bound = 0;             // LUT variants: the derived LUT error bound in the threshold
   std::string lut_derivation;
   // CPU wall times: compile, build, draw, readback, reference, compare, and io (writing the
@@ -96,6 +126,9 @@ struct CellResult {
   bool program_cached = false;
   GpuTiming gpu;
   std::string vertex_spirv_hash, fragment_spirv_hash;   // hex FNV-1a 64 of the driver SPIR-V
+  // Hex FNV-1a 64 of what the image depends on besides the shaders: size, camera, lights,
+  // the case's parameters, light and ambient, the mesh. Stored images are matched on it.
+  std::string scene_hash;
   // Function-body instructions of the driver SPIR-V (stats::count_spirv), per stage.
   int vertex_instructions = 0, fragment_instructions = 0;
   CellArtefacts artefacts;

@@ -71,7 +71,11 @@ SummaryMatrix build_summary_matrix(const RunReport& report) {
     if (r.status != "pass" && r.status != "skipped") cell.problems.push_back(i);
     if (r.status != "pass" && r.status != "fail") continue;   // an error drew nothing: no error to show
     const double e = r.metrics.max_abs, t = r.interior_threshold;
-    const double ratio = t > 0 ? e / t : e > 0 ? std::numeric_limits<double>::infinity() : e;   // e: 0 or NaN
+    // A relative tolerance has no single threshold: its share is measured per pixel.
+    const double ratio = r.interior_threshold_rel > 0 ? r.metrics.tolerance_share
+                         : t > 0                       ? e / t
+                         : e > 0                       ? std::numeric_limits<double>::infinity()
+                                                       : e;   // e: 0 or NaN
     if (!row.measured || worse(e, row.worst_max_abs)) row.worst_max_abs = e;
     if (!row.measured || worse(ratio, row.worst_of_threshold)) row.worst_of_threshold = ratio;
     row.measured = true;

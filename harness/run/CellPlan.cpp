@@ -17,6 +17,29 @@ std::vector<BackendSlot> start_backends(const std::vector<std::string>& filter) 
       backends.push_back({name, std::string(name) == "vulkan" ? make_vulkan_backend() : make_gl_backend()});
   return backends;
 }
+std::vector<std::string> backends_to_start(const std::vector<Case>& cases, const std::vector<std::string>& filter) {
+  if (filter.empty()) return {};
+  std::vector<std::string> names = filter;
+  for (const Case& c : cases)
+    if (c.reference_render && !wanted(names, c.reference_render->backend)) names.push_back(c.reference_render->backend);
+  return names;
+}
+
+namespace {
+
+// The planned cell that draws a differential case's original for variant `v`.
+std::optional<PlannedCell> reference_cell_of(const Case& c, std::vector<BackendSlot>& backends) {
+  const RenderReference& r = *c.reference_render;
+  for (BackendSlot& b : backends) {
+    if (b.name != r.backend) continue;
+    for (ShaderPath p : {ShaderPath::spirv, ShaderPath::native_glsl, ShaderPath::cross_glsl})
+      if (to_string(p) == r.path) return PlannedCell{r.language, &b, p};
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 std::vector<CellGroup> plan_cells(const std::vector<Case>& cases, std::vector<BackendSlot>& backends,
                                   const CellFilters& f) {
   std::vector<CellGroup> groups;
@@ -26,9 +49,16 @@ std::vector<CellGroup> plan_cells(const std::vector<Case>& cases, std::vector<Ba
       for (const std::string& shape : shape_names()) {
         if (!wanted(f.shapes, shape)) continue;
         CellGroup group{&c, &v, shape, {}};
+        if (c.reference_render) {
+          group.reference_cell = reference_cell_of(c, backends);
+          group.reference_variant = &v;
+          for (const Variant& original : c.variants)
+            if (original.name == c.reference_render->variant) group.reference_variant = &original;
+        }
         for (const auto& [language, files] : v.shaders) {
           if (!wanted(f.languages, to_string(language))) continue;
           for (BackendSlot& b : backends) {
+            if (!wanted(f.backends, b.name)) continue;
             const std::vector<ShaderPath> paths =
                 b.backend ? (*b.backend)->paths(language) : std::vector<ShaderPath>{ShaderPath::spirv};
             for (ShaderPath p : paths) group.cells.push_back({language, &b, p});

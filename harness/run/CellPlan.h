@@ -2,6 +2,7 @@
 // The cells of a run, grouped by case x variant x shape: every render of a group shows
 // the same scene, so attribution compares them with each other. Shards split whole
 // groups, deterministically, so a shard can attribute its own failures.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,11 +31,19 @@ struct CellGroup {
   const Variant* variant;
   std::string shape;
   std::vector<PlannedCell> cells;
+  // A differential case's original: the cell whose render every cell of the group is
+  // judged against, drawn whatever the filters select (its variant may be another one).
+  std::optional<PlannedCell> reference_cell;
+  const Variant* reference_variant = nullptr;
 };
 
 struct CellFilters {
-  std::vector<std::string> variants, languages, shapes;
+  std::vector<std::string> variants, languages, shapes, backends;
 };
+
+// The backends a run starts: the filter's (empty = vulkan, gl), plus the backend of every
+// selected differential case's reference render, which is drawn even when filtered out.
+std::vector<std::string> backends_to_start(const std::vector<Case>& cases, const std::vector<std::string>& filter);
 
 std::vector<CellGroup> plan_cells(const std::vector<Case>& cases, std::vector<BackendSlot>& backends,
                                   const CellFilters& filters);

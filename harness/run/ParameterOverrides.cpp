@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 
 #include <fmt/format.h>
 
@@ -38,7 +39,11 @@ Result<void> apply_parameter_overrides(const std::vector<std::string>& overrides
     const auto& [name, values] = *parsed;
     int applied = 0;
     for (Case& c : cases) {
-      if (!selected.empty() && std::find(selected.begin(), selected.end(), c.name) == selected.end()) continue;
+      // A case is selected by name, or by its file (`--case ~/port/phong.toml`).
+      const bool chosen = selected.empty() || std::ranges::any_of(selected, [&](const std::string& s) {
+        return s == c.name || (s.ends_with(".toml") && std::filesystem::path(s).stem() == c.name);
+      });
+      if (!chosen) continue;
       auto it = c.params.find(name);
       if (it == c.params.end()) continue;
       if (it->second.size() != values.size())

@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <set>
 #include <thread>
 #include <tuple>
 
@@ -22,6 +23,8 @@
 #include "run/ProgramArtefacts.h"
 #include "run/ProgramCache.h"
 #include "run/ReferenceRender.h"
+#include "run/StoredImages.h"
+#include "core/Fnv1a.h"
 #include "run/Toolchain.h"
 #include "compare/Attribution.h"
 #include "compare/ImageComparison.h"
@@ -55,7 +58,7 @@ Result<std::vector<Case>> select_cases(const RunOptions& o) {
   if (auto ok = apply_parameter_overrides(o.params, o.cases, cases); !ok) return std::unexpected(ok.error());
   // An unknown model is bad input in the case file, not an error in every one of its cells.
   for (const Case& c : cases)
-    if (!reference::find_model(c.model)) {
+    if (!c.differential() && !reference::find_model(c.model)) {
       std::string known;
       for (const std::string& name : reference::model_names()) known += (known.empty() ? "" : ", ") + name;
       return std::unexpected(Error{.message = "unknown model '" + c.model + "' (models: " + known + ")", .file = c.path,
@@ -82,6 +85,12 @@ GpuTiming gpu_timing(const RenderTimings& t, const TimingRequest& request) {
   return {t.gpu_clock, request.warmup, int(t.gpu_ms.size()), interval(t.gpu_ms), interval(t.wall_ms)};
 }
 
+// The stored runs this run compares with, loaded (and checked) before anything is drawn.
+struct StoredReferences {
+  std::map<std::string, StoredRun> runs;                  // by folder
+  std::map<std::string, std::string> toolchain_notes;     // by folder: "" when drawn alike
+};
+
 // Everything computed once and shared by the cells that need it.
 struct Caches {
   explicit Caches(const RunOptions& o) : programs({o.relaxed_precision, o.out_dir, wanted(o.backends, "gl")}) {}
@@ -93,7 +102,8 @@ struct Caches {
 
 class GroupRunner {
  public:
-  GroupRunner(const RunOptions& o, const SceneSetup& scene, Caches& caches) : o_(o), scene_(scene), caches_(caches) {}
+  GroupRunner(const RunOptions& o, const SceneSetup& scene, const StoredReferences& stored, Caches& caches)
+      : o_(o), scene_(scene), stored_(stored), caches_(caches) {}
 
   // Runs one case x variant x shape: every language, backend and path.
   std::vector<CellResult> run(const CellGroup& g) {
@@ -113,69 +123,202 @@ class GroupRunner {
     }
     area_ = caches_.areas.at(mesh_key);
 
-    const auto t0 = Clock::now();
-    const Result<ReferenceImage> reference =
-        render_reference(mesh, scene_, c, o_.per_pixel_reference ? LightingMode::per_pixel : g.variant->mode);
-    const double reference_ms = ms_since(t0);
-    if (reference && !dir.empty()) write_reference(*reference, dir);
-    classes_ = reference ? classify_pixels(*reference) : std::vector<PixelClass>{};
-
-    Thresholds thresholds{c.interior.max_abs, c.silhouette.max_abs, 0, ""};
+    Thresholds thresholds{c.interior.max_abs, c.silhouette.max_abs, c.interior.max_rel, c.silhouette.max_rel, 0, ""};
     Result<const Texture*> lut = prepare_lut(g, mesh, thresholds);
+    const std::string scene_hash = scene_fingerprint(c, mesh_key);
+    // --against DIR, or the case's `reference = { images = "DIR" }`: each cell its own image.
+    const std::string& stored_dir = o_.against_dir.empty() ? c.reference_images : o_.against_dir;
+    const StoredRun* stored = stored_dir.empty() ? nullptr : &stored_.runs.at(stored_dir);
+
+    // The reference: the model in double, or the original's render (drawn first; when it is
+    // one of the group's cells, that cell's own draw is the reference).
+    std::optional<size_t> reference_index;
+    std::optional<Drawn> reference_draw;
+    ReferenceSource source;
+    const auto t0 = Clock::now();
+    Result<ReferenceImage> reference = fail("reference", "not drawn");
+    if (stored) {
+      source = {"images", "images in " + stored->dir, false, stored_.toolchain_notes.at(stored_dir)};
+    } else if (!c.differential()) {
+      const LightingMode mode = o_.per_pixel_reference ? LightingMode::per_pixel : g.variant->mode;
+      reference = render_reference(mesh, scene_, c, mode);
+      source = {"model", c.model + (mode == LightingMode::per_pixel ? " (per pixel)" : " (per vertex)")};
+    } else {
+      source = {"render", original_label(g)};
+      reference_index = original_among_cells(g);
+      reference = draw_original(g, mesh, lut, thresholds, source, reference_index, reference_draw);
+    }
+    const double reference_ms = ms_since(t0);
+    if (reference && !dir.empty()) (void)write_reference(*reference, dir / "reference");
+    classes_ = reference ? classify_pixels(*reference) : std::vector<PixelClass>{};
 
     std::vector<CellResult> results;
     std::vector<Image> images;   // kept for attribution, one per cell that rendered
     std::vector<size_t> rendered_cells;
-    for (const PlannedCell& cell : g.cells) {
-      CellResult r{.case_name = c.name, .variant = g.variant->name, .language = to_string(cell.language),
-                   .backend = cell.backend->name, .path = to_string(cell.path), .shape = g.shape};
-      r.interior_threshold = thresholds.interior;
-      r.silhouette_threshold = thresholds.silhouette;
-      r.lut_bound = thresholds.lut_bound;
-      r.lut_derivation = thresholds.lut_derivation;
-      r.time_ms["reference"] = reference_ms;
-      Image image;
-      if (auto ok = run_cell(g, cell, mesh, reference, lut, dir, r, image); !ok) {
-        r.status = ok.error().skipped ? "skipped" : "error";
-        r.message = ok.error().to_string();
+    for (size_t i = 0; i < g.cells.size(); ++i) {
+      const PlannedCell& cell = g.cells[i];
+      CellResult r = row(g, cell, thresholds, source);
+      Result<Image> image = fail("draw", "not drawn");
+      if (reference_index == i && reference_draw) {   // drawn already, as the reference
+        r = std::move(reference_draw->result);
+        image = std::move(reference_draw->image);
+        r.reference.is_reference = true;
       } else {
-        images.push_back(std::move(image));
+        image = draw_cell(c, *g.variant, cell, mesh, lut, o_.timing, r);
+      }
+      r.time_ms["reference"] = reference_ms;
+      r.scene_hash = scene_hash;
+      Result<void> judged = !image ? Result<void>(std::unexpected(image.error())) : save_image(*image, r);
+      if (judged && stored) {
+        const Result<ReferenceImage> own = load_stored_image(*stored, r.id(), scene_hash);
+        judged = own ? judge_cell(*image, *own, classify_pixels(*own), dir, r)
+                     : Result<void>(std::unexpected(own.error()));
+      } else if (judged) {
+        judged = reference ? judge_cell(*image, *reference, classes_, dir, r)
+                           : Result<void>(std::unexpected(reference.error()));
+      }
+      if (!judged) {
+        r.status = judged.error().skipped ? "skipped" : "error";
+        r.message = judged.error().to_string();
+      } else {
+        if (r.reference.is_reference)
+          r.message = "the reference: every other cell of this case is judged against this render of the original";
+        images.push_back(std::move(*image));
         rendered_cells.push_back(results.size());
       }
       results.push_back(std::move(r));
     }
-    if (reference) attribute(results, images, rendered_cells, *reference, thresholds);
+    if (reference && !stored) attribute(g, results, images, rendered_cells, *reference, thresholds);
     return results;
   }
 
  private:
   struct Thresholds {
-    double interior, silhouette, lut_bound;
+    double interior, silhouette, interior_rel, silhouette_rel, lut_bound;
     std::string lut_derivation;
   };
 
+  struct Drawn {
+    CellResult result;
+    Image image;
+  };
+
+  // A cell's row before it is drawn: its identity, thresholds and reference.
+  static CellResult row(const CellGroup& g, const PlannedCell& cell, const Thresholds& t, const ReferenceSource& source) {
+    CellResult r{.case_name = g.c->name, .variant = g.variant->name, .language = to_string(cell.language),
+                 .backend = cell.backend->name, .path = to_string(cell.path), .shape = g.shape};
+    r.interior_threshold = t.interior;
+    r.silhouette_threshold = t.silhouette;
+    r.interior_threshold_rel = t.interior_rel;
+    r.silhouette_threshold_rel = t.silhouette_rel;
+    r.tolerance_reason = g.c->interior.reason;
+    r.lut_bound = t.lut_bound;
+    r.lut_derivation = t.lut_derivation;
+    r.reference = source;
+    return r;
+  }
+
+  // "hlsl vulkan/spirv" (and the variant when it is another one).
+  static std::string original_label(const CellGroup& g) {
+    const RenderReference& r = *g.c->reference_render;
+    std::string label = fmt::format("{} {}/{}", to_string(r.language), r.backend, r.path);
+    if (!r.variant.empty()) label += " (variant " + r.variant + ")";
+    return label;
+  }
+
+  // Which of the group's cells draws the original, if the filters kept it.
+  static std::optional<size_t> original_among_cells(const CellGroup& g) {
+    if (!g.reference_cell || g.reference_variant != g.variant) return std::nullopt;
+    for (size_t i = 0; i < g.cells.size(); ++i) {
+      const PlannedCell& cell = g.cells[i];
+      if (cell.language == g.reference_cell->language && cell.backend == g.reference_cell->backend &&
+          cell.path == g.reference_cell->path)
+        return i;
+    }
+    return std::nullopt;
+  }
+
+  // Draws the differential case's original and turns it into the reference: double RGBA and
+  // its coverage. The original must itself look like the shape (coverage near the mesh's
+  // projected area); a blank or misplaced original judges nothing.
+  Result<ReferenceImage> draw_original(const CellGroup& g, const Mesh& mesh, const Result<const Texture*>& lut,
+                                       const Thresholds& t, const ReferenceSource& source, std::optional<size_t> index,
+                                       std::optional<Drawn>& drawn) {
+    const Case& c = *g.c;
+    const std::string label = original_label(g);
+    if (!g.reference_cell)
+      return std::unexpected(Error{.message = "the reference backend '" + c.reference_render->backend +
+                                              "' has no path '" + c.reference_render->path + "'",
+                                   .file = c.path, .line = c.reference_render->line, .stage = "reference"});
+    CellResult r = row(g, *g.reference_cell, t, source);
+    // As a cell of the run it is timed like the others; drawn only as the reference, once.
+    const TimingRequest timing = index ? o_.timing : TimingRequest{.warmup = 0, .runs = 1};
+    Result<Image> image = draw_cell(c, *g.reference_variant, *g.reference_cell, mesh, lut, timing, r);
+    if (!image)
+      return std::unexpected(Error{.message = "the original (" + label + ") could not be drawn: " + image.error().to_string(),
+                                   .file = c.path, .line = c.reference_render->line, .stage = "reference"});
+    ReferenceImage reference{image->width, image->height, std::vector<double>(image->rgba.begin(), image->rgba.end()),
+                             image->coverage};
+    const Comparison itself = compare_images(*image, reference, {}, area_);
+    if (itself.degenerate || itself.blank || itself.interior.pixels == 0)
+      return std::unexpected(Error{.message = "the original (" + label + ") is no reference: " + itself.reason,
+                                   .file = c.path, .line = c.reference_render->line, .stage = "reference"});
+    if (index) drawn = Drawn{std::move(r), std::move(*image)};
+    return reference;
+  }
+
   // Which stage the failures of this group point at, from how its renders agree.
-  void attribute(std::vector<CellResult>& results, const std::vector<Image>& images,
+  void attribute(const CellGroup& g, std::vector<CellResult>& results, const std::vector<Image>& images,
                  const std::vector<size_t>& rendered, const ReferenceImage& reference, const Thresholds& t) {
     std::vector<RenderOutcome> outcomes;
     for (size_t i = 0; i < rendered.size(); ++i) {
       const CellResult& r = results[rendered[i]];
       outcomes.push_back({r.language, r.backend, r.path, r.status == "pass", &images[i]});
     }
-    const std::vector<Verdict> verdicts = attribute_failures(outcomes, reference, {t.interior, t.silhouette}, area_);
+    const std::vector<Verdict> verdicts = attribute_failures(
+        outcomes, reference, {t.interior, t.silhouette, t.interior_rel, t.silhouette_rel}, area_);
+    // Against the original: renders of the port that all fail and agree with each other
+    // point at the port's source, whichever languages and backends drew them.
+    std::string port_reason;
+    if (g.c->reference_render) {
+      std::vector<const Image*> failing;
+      std::set<std::string> failing_languages, passing_languages;
+      for (size_t i = 0; i < rendered.size(); ++i) {
+        const CellResult& r = results[rendered[i]];
+        if (r.status == "fail") failing.push_back(&images[i]), failing_languages.insert(r.language);
+        else passing_languages.insert(r.language);
+      }
+      // A language that also passes somewhere is a backend's or path's fault, not its source's.
+      const bool whole_languages = std::ranges::none_of(failing_languages, [&](const std::string& l) {
+        return passing_languages.contains(l);
+      });
+      const double spread = renders_max_difference(failing, classes_);
+      if (whole_languages && failing.size() > 1 && spread <= t.interior)
+        port_reason = fmt::format("all {} failing renders agree with each other (max difference {:.3g}) and differ from "
+                                  "the original ({}): the port's source computes something else",
+                                  failing.size(), spread, results.front().reference.label);
+    }
     for (size_t i = 0; i < rendered.size() && i < verdicts.size(); ++i) {
       CellResult& r = results[rendered[i]];
-      r.attribution = to_string(verdicts[i].attribution);
-      r.attribution_reason = verdicts[i].reason;
+      const Verdict& v = verdicts[i];
+      const bool geometry = v.attribution == Attribution::matrix_convention;
+      if (!port_reason.empty() && r.status == "fail" && !geometry) {
+        r.attribution = "port";
+        r.attribution_reason = port_reason;
+      } else {
+        r.attribution = to_string(v.attribution);
+        r.attribution_reason = v.reason;
+      }
     }
   }
 
-  void write_reference(const ReferenceImage& ref, const fs::path& dir) {
+  // `stem`.exr and `stem`.png.
+  Result<void> write_reference(const ReferenceImage& ref, const fs::path& stem) {
     Image preview(ref.width, ref.height);
     for (size_t i = 0; i < ref.rgba.size(); ++i) preview.rgba[i] = float(ref.rgba[i]);
     preview.coverage = ref.coverage;
-    (void)write_exr((dir / "reference.exr").string(), ref.width, ref.height, preview.rgba);
-    (void)write_png((dir / "reference.png").string(), preview);
+    if (auto ok = write_exr(stem.string() + ".exr", ref.width, ref.height, preview.rgba); !ok) return ok;
+    return write_png(stem.string() + ".png", preview);
   }
 
   // The variant's LUT (nullptr when it has none), and the thresholds widened by the
@@ -199,18 +342,16 @@ class GroupRunner {
     return &*texture;
   }
 
-  Result<void> run_cell(const CellGroup& g, const PlannedCell& cell, const Mesh& mesh,
-                        const Result<ReferenceImage>& reference, const Result<const Texture*>& lut, const fs::path& dir,
-                        CellResult& r, Image& image) {
-    const Case& c = *g.c;
-    const CachedProgram& compiled = caches_.programs.get(c, *g.variant, cell.language);
+  // Compiles, binds and draws one cell of `variant`; fills r's compile and draw parts.
+  Result<Image> draw_cell(const Case& c, const Variant& variant, const PlannedCell& cell, const Mesh& mesh,
+                          const Result<const Texture*>& lut, const TimingRequest& timing, CellResult& r) {
+    const CachedProgram& compiled = caches_.programs.get(c, variant, cell.language);
     if (!compiled.program) return std::unexpected(compiled.program.error());
     r.time_ms["compile"] = compiled.ms;
     r.artefacts = compiled.sources;
     r.vertex_spirv_hash = spirv_hash(compiled.program->vertex.spirv);
     r.fragment_spirv_hash = spirv_hash(compiled.program->fragment.spirv);
     std::tie(r.vertex_instructions, r.fragment_instructions) = compiled.instructions;
-    if (!reference) return std::unexpected(reference.error());
     if (!lut) return std::unexpected(lut.error());
     if (!cell.backend->backend) return std::unexpected(Error(cell.backend->backend.error()).in_backend(cell.backend->name));
 
@@ -218,12 +359,13 @@ class GroupRunner {
     static const BindingTable no_bindings;
     const BindingTable& table = bindings == c.bindings.end() ? no_bindings : bindings->second;
     CaseUniforms uniforms(table, bindable_values(scene_, c), c.path);
-    if (auto bound = uniforms.check_all_bound(*compiled.program); !bound) return bound;
+    if (auto bound = uniforms.check_all_bound(*compiled.program); !bound) return std::unexpected(bound.error());
     CaseTextures textures(table, c.textures.for_language(cell.language), *lut, c.path,
                           &compiled.program->sampler_settings);
-    if (auto ok = textures.check(*compiled.program); !ok) return ok;
-    r.reference_note = textures.reference_note();
-    DrawJob job{*compiled.program, cell.path, mesh, uniforms, scene_.width, scene_.height, &textures, o_.timing};
+    if (auto ok = textures.check(*compiled.program); !ok) return std::unexpected(ok.error());
+    // A model reads no texture; a render of the original reads the same ones.
+    if (!c.differential()) r.reference_note = textures.reference_note();
+    DrawJob job{*compiled.program, cell.path, mesh, uniforms, scene_.width, scene_.height, &textures, timing};
     job.render_state = compiled.program->render_state;  // a DX9 effect pass's states
     const auto attributes = c.attributes.find(cell.language);
     if (attributes != c.attributes.end()) job.attributes = &attributes->second;
@@ -235,16 +377,48 @@ class GroupRunner {
     r.time_ms["draw"] = t.draw_ms;
     r.time_ms["readback"] = t.readback_ms;
     r.program_cached = t.program_cached;
-    if (!t.gpu_ms.empty()) r.gpu = gpu_timing(t, o_.timing);
+    if (!t.gpu_ms.empty()) r.gpu = gpu_timing(t, timing);
+    return std::move(rendered->image);
+  }
 
+  // Compares a drawn cell with its reference and writes its images under `dir`.
+  // `--save-images DIR`: the render, whole, for later runs to be judged against.
+  Result<void> save_image(const Image& image, CellResult& r) {
+    if (o_.save_images_dir.empty()) return {};
+    if (auto ok = save_stored_image(o_.save_images_dir, r, image); !ok) return ok;
+    r.artefacts.stored_exr = (fs::path(o_.save_images_dir) / stored_image_file(r)).string();
+    return {};
+  }
+
+  // What the image depends on besides the shaders: stored images drawn with another scene
+  // are refused rather than compared.
+  std::string scene_fingerprint(const Case& c, const std::string& mesh_key) const {
+    std::string text = fmt::format("{}x{} {}", scene_.width, scene_.height, mesh_key);
+    const auto add = [&text](const auto& v) {
+      for (int i = 0; i < v.length(); ++i) text += fmt::format(" {:a}", double(v[i]));
+    };
+    add(scene_.camera.eye), add(scene_.camera.target), add(scene_.camera.up);
+    add(scene_.lights.direction), add(scene_.lights.position), add(c.ambient.value_or(scene_.lights.ambient));
+    for (int col = 0; col < 4; ++col) add(scene_.world[col]);
+    text += fmt::format(" fov {:a} light {}", scene_.camera.fovy_degrees, int(c.light));
+    for (const auto& [name, values] : c.params) {
+      text += " " + name;
+      for (double v : values) text += fmt::format(" {:a}", v);
+    }
+    return hex64(fnv1a64(text));
+  }
+
+  Result<void> judge_cell(const Image& image, const ReferenceImage& reference, const std::vector<PixelClass>& classes,
+                          const fs::path& dir, CellResult& r) {
     const auto t0 = Clock::now();
-    const Comparison cmp =
-        compare_images(rendered->image, *reference, {r.interior_threshold, r.silhouette_threshold}, area_, &classes_);
+    const Comparison cmp = compare_images(image, reference,
+                                          {r.interior_threshold, r.silhouette_threshold, r.interior_threshold_rel,
+                                           r.silhouette_threshold_rel},
+                                          area_, &classes);
     r.time_ms["compare"] = ms_since(t0);
     r.metrics = cell_metrics(cmp);
     r.status = cmp.pass ? "pass" : "fail";
     r.message = cmp.reason;
-    image = std::move(rendered->image);
 
     if (dir.empty()) return {};
     const std::string stem = fmt::format("{}-{}-{}", r.language, r.backend, r.path);
@@ -254,6 +428,11 @@ class GroupRunner {
     r.artefacts.error_png = (dir / (stem + ".error.png")).string();
     r.artefacts.reference_png = (dir / "reference.png").string();
     const auto io_start = Clock::now();
+    // A stored image is each cell's own reference: written beside the cell's render.
+    if (r.reference.kind == "images") {
+      r.artefacts.reference_png = (dir / (stem + ".reference.png")).string();
+      if (auto ok = write_reference(reference, dir / (stem + ".reference")); !ok) return ok;
+    }
     for (auto written : {write_exr(r.artefacts.render_exr, scene_.width, scene_.height, image.rgba),
                          write_png(r.artefacts.render_png, image),
                          write_exr(r.artefacts.error_exr, scene_.width, scene_.height, cmp.error.rgba),
@@ -266,6 +445,7 @@ class GroupRunner {
 
   const RunOptions& o_;
   const SceneSetup& scene_;
+  const StoredReferences& stored_;
   Caches& caches_;
   double area_ = 0;   // the current group's expected projected area, in pixels
   std::vector<PixelClass> classes_;   // the current group's reference, classified once for all its cells
@@ -294,8 +474,9 @@ std::vector<std::vector<const CellGroup*>> bundles_of(const std::vector<CellGrou
 // Runs the groups on `o.jobs` workers. The first uses the backends already started (so the
 // report's driver versions are the ones that ran); every other worker starts its own,
 // as a Vulkan device and a GL context serve one thread at a time.
-std::vector<CellResult> run_groups(const RunOptions& o, const SceneSetup& scene, const std::vector<CellGroup>& groups,
-                                   std::vector<BackendSlot>& first_backends, size_t total, int& workers_used) {
+std::vector<CellResult> run_groups(const RunOptions& o, const SceneSetup& scene, const StoredReferences& stored,
+                                   const std::vector<CellGroup>& groups, std::vector<BackendSlot>& first_backends,
+                                   const std::vector<std::string>& backend_names, size_t total, int& workers_used) {
   const auto bundles = bundles_of(groups);
   const int hardware = int(std::max(1u, std::thread::hardware_concurrency()));
   const size_t workers = std::min(bundles.size(), size_t(o.jobs > 0 ? o.jobs : hardware));
@@ -305,7 +486,7 @@ std::vector<CellResult> run_groups(const RunOptions& o, const SceneSetup& scene,
   std::vector<CellResult> results;
   const auto work = [&](std::vector<BackendSlot>& backends) {
     Caches caches(o);
-    GroupRunner runner(o, scene, caches);
+    GroupRunner runner(o, scene, stored, caches);
     for (;;) {
       size_t b;
       {
@@ -317,6 +498,8 @@ std::vector<CellResult> run_groups(const RunOptions& o, const SceneSetup& scene,
         // The plan points at the first worker's backends; run on this worker's own.
         CellGroup local = *g;
         for (PlannedCell& cell : local.cells) cell.backend = &backends[cell.backend - first_backends.data()];
+        if (local.reference_cell)
+          local.reference_cell->backend = &backends[local.reference_cell->backend - first_backends.data()];
         for (CellResult& r : runner.run(local)) {
           const std::lock_guard lock(mutex);
           results.push_back(std::move(r));
@@ -329,12 +512,32 @@ std::vector<CellResult> run_groups(const RunOptions& o, const SceneSetup& scene,
   std::vector<std::jthread> threads;
   for (auto& backends : own)
     threads.emplace_back([&] {
-      backends = start_backends(o.backends);
+      backends = start_backends(backend_names);
       work(backends);
     });
   work(first_backends);
   threads.clear();   // joins
   return results;
+}
+
+// Every stored run the options and the selected cases name, checked against this run's
+// image size before anything is drawn; a different toolchain is noted, not refused.
+Result<StoredReferences> load_stored_references(const RunOptions& o, const std::vector<Case>& cases,
+                                                const ToolVersions& tools) {
+  StoredReferences stored;
+  std::vector<std::string> dirs;
+  if (!o.against_dir.empty()) dirs.push_back(o.against_dir);
+  else
+    for (const Case& c : cases)
+      if (!c.reference_images.empty()) dirs.push_back(c.reference_images);
+  for (const std::string& dir : dirs) {
+    if (stored.runs.contains(dir)) continue;
+    auto run = load_stored_run(dir, o.size);
+    if (!run) return std::unexpected(Error(run.error()).in_stage(o.against_dir.empty() ? "case" : "--against"));
+    stored.toolchain_notes[dir] = toolchain_difference(run->tools, tools);
+    stored.runs.emplace(dir, std::move(*run));
+  }
+  return stored;
 }
 
 }  // namespace
@@ -367,9 +570,10 @@ Result<RunReport> run_suite(const RunOptions& o) {
     shard = *parsed;
   }
 
-  std::vector<BackendSlot> backends = start_backends(o.backends);
+  const std::vector<std::string> backend_names = backends_to_start(*cases, o.backends);
+  std::vector<BackendSlot> backends = start_backends(backend_names);
 
-  std::vector<CellGroup> groups = plan_cells(*cases, backends, {o.variants, o.languages, o.shapes});
+  std::vector<CellGroup> groups = plan_cells(*cases, backends, {o.variants, o.languages, o.shapes, o.backends});
   if (groups.empty()) return fail("options", "the filters select no cells");
   if (shard) groups = select_shard(std::move(groups), *shard);
   size_t total = 0;
@@ -383,7 +587,10 @@ Result<RunReport> run_suite(const RunOptions& o) {
 
   SceneSetup scene;
   scene.width = scene.height = o.size;
-  std::vector<CellResult> results = run_groups(o, scene, groups, backends, total, report.workers);
+  auto stored = load_stored_references(o, *cases, report.tools);
+  if (!stored) return std::unexpected(stored.error());
+  std::vector<CellResult> results =
+      run_groups(o, scene, *stored, groups, backends, backend_names, total, report.workers);
   report.results = std::move(results);
   apply_expectations(known, report);
   sort_results(report);
@@ -394,6 +601,8 @@ Result<RunReport> run_suite(const RunOptions& o) {
                           caches.compile_enabled() ? caches.compile_dir() : "", compiles.hits(), compiles.misses(),
                           compiles.memory_hits};
   report.wall_ms = ms_since(start);
+  if (!o.save_images_dir.empty())
+    if (auto ok = write_stored_manifest(o.save_images_dir, report, o.size); !ok) return std::unexpected(ok.error());
   return report;
 }
 

@@ -23,6 +23,8 @@ struct RunOptions {
   std::vector<std::string> params;       // "name=value[,value...]" overrides
   int size = 256;
   std::string out_dir;                   // images go here; empty = no images
+  std::string save_images_dir;           // --save-images: every render, exact, with a manifest (run/StoredImages.h)
+  std::string against_dir;               // --against: judge every cell against its image stored there
   std::string shard;                     // "I/N": run only this shard of the cell groups
   std::string expectations;              // known-failures TOML file, "" = none
   // Worker threads, each with its own Vulkan device and GL context; 0 = one per core.

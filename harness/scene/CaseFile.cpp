@@ -64,18 +64,70 @@ Result<Tolerance> tolerance(const std::string& path, const toml::table& t, const
   if (!node) return std::unexpected(at(path, t, "[tolerance] needs '" + key + "' = { max_abs = ..., reason = \"...\" }"));
   const toml::table* tt = node->as_table();
   if (!tt) return std::unexpected(at(path, *node, "tolerance '" + key + "' must be a table"));
-  if (auto ok = check_keys(path, *tt, {"max_abs", "reason"}, "tolerance '" + key + "'"); !ok)
+  if (auto ok = check_keys(path, *tt, {"max_abs", "max_rel", "reason"}, "tolerance '" + key + "'"); !ok)
     return std::unexpected(ok.error());
   auto max_abs = (*tt)["max_abs"].value<double>();
+  const double max_rel = (*tt)["max_rel"].value_or(0.0);
   auto reason = (*tt)["reason"].value<std::string>();
   if (!max_abs) return std::unexpected(at(path, *node, "tolerance '" + key + "' needs max_abs"));
   // A NaN threshold would pass every cell (no comparison with NaN fails).
   if (!std::isfinite(*max_abs) || *max_abs < 0)
     return std::unexpected(at(path, *node, "tolerance '" + key + "': max_abs must be a finite number >= 0"));
+  if (tt->get("max_rel") && (!tt->get("max_rel")->is_number() || !std::isfinite(max_rel) || max_rel < 0))
+    return std::unexpected(at(path, *tt->get("max_rel"), "tolerance '" + key + "': max_rel must be a finite number >= 0"));
   // Thresholds are explained, not tuned: a number without a reason is refused.
   if (!reason || reason->empty())
     return std::unexpected(at(path, *node, "tolerance '" + key + "' needs a reason saying why this threshold"));
-  return Tolerance{*max_abs, *reason};
+  return Tolerance{*max_abs, *reason, max_rel};
+}
+
+// `reference = { language = "hlsl", backend = "vulkan", path = "spirv", variant = "pixel" }`
+// (a render of the original) or `reference = { images = "DIR" }` (a stored run).
+Result<void> reference_source(const std::string& path, const fs::path& shader_root, const toml::node& node, Case& c) {
+  const toml::table* t = node.as_table();
+  if (!t)
+    return std::unexpected(at(path, node, "reference must be a table: { language = \"hlsl\", backend = \"vulkan\", "
+                                          "path = \"spirv\" } or { images = \"DIR\" }"));
+  if (auto ok = check_keys(path, *t, {"language", "backend", "path", "variant", "images"}, "reference"); !ok)
+    return ok;
+  if (const toml::node* images = t->get("images")) {
+    const auto dir = images->value<std::string>();
+    if (!dir || dir->empty()) return std::unexpected(at(path, *images, "reference images must name a folder"));
+    if (t->size() > 1)
+      return std::unexpected(at(path, node, "reference = { images = ... } takes no language, backend, path or variant: "
+                                            "each cell is compared with its own stored image"));
+    c.reference_images = (shader_root / *dir).lexically_normal().string();
+    return {};
+  }
+  RenderReference r{.line = int(node.source().begin.line)};
+  const toml::node* language = t->get("language");
+  if (!language) return std::unexpected(at(path, node, "reference needs language = \"hlsl\" | \"cg\" | \"glsl\" (the original's)"));
+  auto lang = parse_language(language->value_or(std::string()));
+  if (!lang) return std::unexpected(at(path, *language, lang.error().message));
+  r.language = *lang;
+  if (const toml::node* backend = t->get("backend")) {
+    r.backend = backend->value_or(std::string());
+    if (r.backend != "vulkan" && r.backend != "gl")
+      return std::unexpected(at(path, *backend, "reference backend must be \"vulkan\" or \"gl\""));
+  }
+  // The path a backend takes by default: SPIR-V, except the author's own GLSL on GL.
+  r.path = r.backend == "gl" && r.language == Language::glsl ? "glsl" : "spirv";
+  if (const toml::node* p = t->get("path")) {
+    r.path = p->value_or(std::string());
+    const bool known = r.path == "spirv" || r.path == "glsl" || r.path == "cross";
+    if (!known) return std::unexpected(at(path, *p, "reference path must be \"spirv\", \"glsl\" or \"cross\""));
+    if (r.backend == "vulkan" && r.path != "spirv")
+      return std::unexpected(at(path, *p, "the vulkan backend takes only path = \"spirv\""));
+    if (r.path == "glsl" && r.language != Language::glsl)
+      return std::unexpected(at(path, *p, "path = \"glsl\" is the native GL path of GLSL shaders; " +
+                                              std::string(to_string(r.language)) + " runs on \"spirv\" or \"cross\""));
+  }
+  if (const toml::node* variant = t->get("variant")) {
+    r.variant = variant->value_or(std::string());
+    if (r.variant.empty()) return std::unexpected(at(path, *variant, "reference variant must name a variant"));
+  }
+  c.reference_render = r;
+  return {};
 }
 
 // Literal numbers: a number, a boolean (1 or 0) or an array of them, nested arrays
@@ -292,7 +344,55 @@ Result<TextureTable> texture_table(const std::string& path, const fs::path& shad
   return table;
 }
 
+// The reference render's variant must exist and hold the reference's language; a LUT
+// variant needs a model (its bound is the LUT against the analytic function).
+Result<Case> checked_reference(const std::string& path, const toml::table& root, Case c) {
+  if (!c.reference_render) {
+    if (!c.model.empty()) return c;
+    for (const Variant& v : c.variants)
+      if (!v.lut.empty())
+        return std::unexpected(at(path, root, "variant '" + v.name + "' uses a generated LUT: it needs a model"));
+    return c;
+  }
+  const RenderReference& r = *c.reference_render;
+  const toml::node& where = *root.get("reference");
+  for (const Variant& v : c.variants) {
+    if (!v.lut.empty())
+      return std::unexpected(at(path, root, "variant '" + v.name + "' uses a generated LUT: it needs a model"));
+    if (!r.variant.empty() && v.name != r.variant) continue;
+    if (!v.shaders.contains(r.language))
+      return std::unexpected(at(path, where, "reference language " + std::string(to_string(r.language)) +
+                                                 ": variant '" + v.name + "' has no " + to_string(r.language) +
+                                                 " shaders"));
+  }
+  if (!r.variant.empty() && std::ranges::none_of(c.variants, [&](const Variant& v) { return v.name == r.variant; }))
+    return std::unexpected(at(path, where, "reference variant '" + r.variant + "' is not a variant of the case"));
+  return c;
+}
+
 }  // namespace
+
+// DESIGN: the differential default tolerance. Both sides are fp32 renders of one lighting
+// computation, compiled by different front ends (and drivers), so each pixel carries the
+// rounding of a chain of normalize/dot/pow: a few hundred ulp of the value in the worst
+// measured library shaders, amplified by pow's exponent. 2^-13 (about 1000 ulp) of the
+// pixel's magnitude bounds that chain for exponents up to ~100 with room to spare, and the
+// absolute floor (the library's fp32-against-double interior bound) covers values near
+// black, where cancellation in N·L leaves absolute, not relative, error. The silhouette
+// band shades extrapolated attributes: ten times both.
+Tolerance differential_interior_tolerance() {
+  return {1e-5,
+          "differential default: two fp32 renders of one shading computation; |a - b| <= 1e-5 + 2^-13 |b| (about "
+          "1000 ulp of the pixel's value for the normalize/dot/pow chain, 1e-5 near black)",
+          0x1p-13};
+}
+
+Tolerance differential_silhouette_tolerance() {
+  return {1e-4,
+          "differential default: edge pixels shade extrapolated attributes; ten times the interior bound, "
+          "one-pixel edge shifts matched separately",
+          0x1p-10};
+}
 
 std::map<std::string, TextureBinding> TextureTable::for_language(Language language) const {
   std::map<std::string, TextureBinding> entries = common;
@@ -331,8 +431,8 @@ Result<Case> load_case(const std::string& path) {
   const fs::path shader_root = shader_root_of(path);
 
   if (auto ok = check_keys(path, root,
-                           {"model", "description", "tessellation", "params", "variants", "bindings", "attributes",
-                            "light", "ambient", "textures", "tolerance"},
+                           {"model", "reference", "description", "tessellation", "params", "variants", "bindings",
+                            "attributes", "light", "ambient", "textures", "tolerance"},
                            "the case");
       !ok)
     return std::unexpected(ok.error());
@@ -340,9 +440,17 @@ Result<Case> load_case(const std::string& path) {
   auto model = root["model"].value<std::string>();
   if (!model && root.get("model"))
     return std::unexpected(at(path, *root.get("model"), "'model' must be a string naming the reference lighting model"));
-  if (!model) return std::unexpected(at(path, root, "missing 'model' (the reference lighting model)"));
-  c.model = *model;
-  c.model_line = int(root.get("model")->source().begin.line);
+  if (model && root.get("reference"))
+    return std::unexpected(at(path, *root.get("reference"), "a case names either a model or a reference render, not both"));
+  if (const toml::node* reference = root.get("reference")) {
+    if (auto ok = reference_source(path, shader_root, *reference, c); !ok) return std::unexpected(ok.error());
+  } else if (!model) {
+    return std::unexpected(at(path, root, "missing 'model' (the reference lighting model) or 'reference' (the original "
+                                          "shader's render: reference = { language = \"hlsl\", backend = \"vulkan\" })"));
+  } else {
+    c.model = *model;
+    c.model_line = int(root.get("model")->source().begin.line);
+  }
   c.description = root["description"].value_or(std::string());
   if (auto t = root["tessellation"].value<std::string>()) {
     if (*t == "low") c.tessellation = Tessellation::low;
@@ -463,6 +571,12 @@ Result<Case> load_case(const std::string& path) {
   }
 
   const toml::table* tol = root["tolerance"].as_table();
+  // A differential case may leave its tolerances to the documented fp32 bound.
+  if (!tol && c.differential()) {
+    c.interior = differential_interior_tolerance();
+    c.silhouette = differential_silhouette_tolerance();
+    return checked_reference(path, root, std::move(c));
+  }
   if (!tol) return std::unexpected(at(path, root, "missing [tolerance] (interior and silhouette, each with a reason)"));
   if (auto ok = check_keys(path, *tol, {"interior", "silhouette", "lut"}, "[tolerance]"); !ok)
     return std::unexpected(ok.error());
@@ -486,7 +600,7 @@ Result<Case> load_case(const std::string& path) {
   for (const Variant& v : c.variants)
     if (!v.lut.empty() && !c.lut)
       return std::unexpected(at(path, *tol, "variant '" + v.name + "' uses a LUT: [tolerance] needs 'lut' with a reason"));
-  return c;
+  return checked_reference(path, root, std::move(c));
 }
 
 Result<std::vector<std::string>> list_case_files(const std::string& directory) {

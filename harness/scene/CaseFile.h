@@ -40,9 +40,11 @@ struct Variant {
   std::string lut;                          // generated lookup texture ("" = none), bound as "lut"
 };
 
+// A channel passes when |render - reference| <= max_abs + max_rel * |reference|.
 struct Tolerance {
   double max_abs = 0;
   std::string reason;
+  double max_rel = 0;
 };
 
 // One part of a binding: a scene quantity or case parameter by name, or literal numbers
@@ -94,10 +96,23 @@ struct TextureTable {
   std::map<std::string, TextureBinding> for_language(Language language) const;
 };
 
+// A differential case's reference: the original shader drawn by one backend and path
+// (`reference = { language = "hlsl", backend = "vulkan", path = "spirv" }`), or the
+// images a known-good run stored (`reference = { images = "DIR" }`, run --save-images).
+struct RenderReference {
+  Language language = Language::hlsl;
+  std::string backend = "vulkan";   // "vulkan" | "gl"
+  std::string path = "spirv";       // "spirv" | "glsl" | "cross" (backends/Backend.h to_string(ShaderPath))
+  std::string variant;              // whose shaders are the original; "" = each variant its own
+  int line = 0;
+};
+
 struct Case {
   std::string name;          // file stem
   std::string path;
-  std::string model;         // reference model name
+  std::string model;         // reference model name; "" in a differential case (reference_render or reference_images)
+  std::optional<RenderReference> reference_render;
+  std::string reference_images;   // absolute folder of stored images, "" = none
   int model_line = 0;        // where the case names it
   std::string description;
   std::map<std::string, std::vector<double>> params;
@@ -113,7 +128,14 @@ struct Case {
   // it from the LUT size" (see lut/), the reason says how.
   std::optional<Tolerance> lut;
   Tessellation tessellation = Tessellation::low;
+
+  // Judged against a render (of the original, or stored) instead of a model.
+  bool differential() const { return model.empty(); }
 };
+
+// The tolerances a differential case gets when it states none (documented in CaseFile.cpp).
+Tolerance differential_interior_tolerance();
+Tolerance differential_silhouette_tolerance();
 
 // Where a case's shader, texture and include paths are relative to: the folder that holds
 // a `cases/` folder (the library's shaders/cases, tests/realworld/cases), else the case

@@ -41,6 +41,14 @@ Command add_run_command(CLI::App& app) {
                   "Override a case parameter: name=value or name=v1,v2,v3 (repeatable), e.g. --param power=20");
   cmd->add_option("--size", run.size, "Image width and height in pixels")->capture_default_str();
   cmd->add_option("--out", run.out_dir, "Folder for renders, references and error images (EXR + PNG)");
+  cmd->add_option("--save-images", run.save_images_dir,
+                  "Keep every drawn cell's render, exact (EXR: RGBA + coverage), with DIR/manifest.json (case, "
+                  "variant, language, backend, path, shape, size, scene, toolchain, SPIR-V hashes), for later runs "
+                  "to be judged against with --against");
+  cmd->add_option("--against", run.against_dir,
+                  "Judge every cell against its own image stored in DIR by an earlier --save-images run (today's "
+                  "port against yesterday's known-good run, lavapipe against real hardware) instead of its model "
+                  "or original; a different image size is refused, a different toolchain is reported");
   args->outputs.add_options(cmd);
   cmd->add_option("--shard", run.shard,
                   "Run shard I of N (e.g. 2/4): case x variant x shape groups are dealt round-robin, so shards "
@@ -65,11 +73,13 @@ Command add_run_command(CLI::App& app) {
 
   return {cmd, [args] {
             if (!args->outputs.load_charts() || !args->outputs.check_writable()) return kExitBadInput;
-            if (!args->options.out_dir.empty())
-              if (auto ok = check_writable_folder(args->options.out_dir, "--out"); !ok) {
-                fmt::print(stderr, "shaderbed: {}\n", ok.error().to_string());
-                return kExitBadInput;
-              }
+            for (const auto& [folder, option] : {std::pair{args->options.out_dir, "--out"},
+                                                  std::pair{args->options.save_images_dir, "--save-images"}})
+              if (!folder.empty())
+                if (auto ok = check_writable_folder(folder, option); !ok) {
+                  fmt::print(stderr, "shaderbed: {}\n", ok.error().to_string());
+                  return kExitBadInput;
+                }
             ConsoleProgress progress(stderr, isatty(STDERR_FILENO), args->console.view == ConsoleView::quiet);
             RunOptions options = args->options;
             options.on_cell = [&](size_t done, size_t total, const CellResult& cell) {
@@ -84,6 +94,10 @@ Command add_run_command(CLI::App& app) {
             if (!args->outputs.write(*report)) return kExitFail;
             if (!options.out_dir.empty())
               fmt::print("images: {}/<case>/<variant>/<shape>/\n", std::filesystem::absolute(options.out_dir).string());
+            if (!options.save_images_dir.empty())
+              fmt::print("stored images: {} (judge later runs with --against {})\n",
+                         (std::filesystem::absolute(options.save_images_dir) / "manifest.json").string(),
+                         options.save_images_dir);
             return report->acceptable() ? 0 : kExitFail;
           }};
 }

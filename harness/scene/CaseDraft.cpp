@@ -1,0 +1,303 @@
+#include "scene/CaseDraft.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <map>
+#include <set>
+
+#include <fmt/format.h>
+
+namespace shaderbed {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr size_t kCommentColumn = 44;   // where the reasons line up
+
+std::string toml_string(std::string_view s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+std::string toml_key(std::string_view key) {
+  const bool bare = !key.empty() && std::all_of(key.begin(), key.end(), [](unsigned char c) {
+    return std::isalnum(c) || c == '_' || c == '-';
+  });
+  return bare ? std::string(key) : toml_string(key);
+}
+
+std::string number(double v) {
+  std::string s = fmt::format("{}", v);
+  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
+  return s;
+}
+
+std::string numbers(const std::vector<double>& values) {
+  if (values.size() == 1) return number(values[0]);
+  std::string s = "[";
+  for (size_t i = 0; i < values.size(); ++i) s += (i ? ", " : "") + number(values[i]);
+  return s + "]";
+}
+
+std::string binding_value(const UniformGuess& g) {
+  std::string value;
+  if (g.sources.size() == 1 && !g.sources[0].name.empty()) {
+    value = toml_string(g.sources[0].name);
+  } else if (g.sources.size() == 1) {
+    value = numbers(g.sources[0].literal);
+  } else {
+    value = "[";
+    for (size_t i = 0; i < g.sources.size(); ++i) {
+      value += i ? ", " : "";
+      if (!g.sources[i].name.empty()) {
+        value += toml_string(g.sources[i].name);
+      } else {
+        for (size_t k = 0; k < g.sources[i].literal.size(); ++k) value += (k ? ", " : "") + number(g.sources[i].literal[k]);
+      }
+    }
+    value += "]";
+  }
+  if (g.layout == MatrixLayout::row_vector) value = "{ value = " + value + ", layout = \"row_vector\" }";
+  return value;
+}
+
+std::string simplified(std::string s) {
+  std::string out;
+  for (char c : s)
+    if (std::isalnum(static_cast<unsigned char>(c))) out += char(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+// Lines of the case, with the TODOs' line numbers.
+class Writer {
+ public:
+  void line(const std::string& text = "") { text_ += text + "\n", ++lines_; }
+  void commented(const std::string& code, const std::string& comment) {
+    std::string s = code;
+    if (!comment.empty()) {
+      s.resize(std::max(s.size() + 1, kCommentColumn), ' ');
+      s += "# " + comment;
+    }
+    line(s);
+  }
+  void todo(const std::string& code, const std::string& what) {
+    todos_.push_back("line " + std::to_string(lines_ + 1) + ": " + what);
+    commented(code, "TODO: " + what);
+  }
+  std::string text() const { return text_; }
+  std::vector<std::string> todos() const { return todos_; }
+
+ private:
+  std::string text_;
+  int lines_ = 0;
+  std::vector<std::string> todos_;
+};
+
+struct LanguageGuesses {
+  const SurveyedLanguage* survey;
+  std::vector<std::pair<const UniformFacts*, UniformGuess>> uniforms;
+};
+
+std::string relative_to(const fs::path& root, const std::string& file) {
+  return fs::path(file).lexically_relative(root).generic_string();
+}
+
+// The image a texture most likely reads: one whose name shares the texture's, else the
+// only image there is; "" when neither.
+std::pair<std::string, std::string> image_for(const std::string& texture, const std::vector<std::string>& images) {
+  const std::string t = simplified(texture);
+  for (const std::string& image : images) {
+    const std::string stem = simplified(fs::path(image).stem().string());
+    if (!stem.empty() && (t.find(stem) != std::string::npos || stem.find(t) != std::string::npos))
+      return {image, "the image named like the texture"};
+  }
+  if (images.size() == 1) return {images.front(), "the only image next to the shader: check it is the one"};
+  return {"", ""};
+}
+
+}  // namespace
+
+std::vector<std::string> images_in(const std::string& folder) {
+  std::vector<std::string> out;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(folder, ec)) {
+    std::string ext = entry.path().extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    if (entry.is_regular_file() &&
+        (ext == ".png" || ext == ".exr" || ext == ".hdr" || ext == ".tga" || ext == ".dds" || ext == ".jpg" || ext == ".jpeg"))
+      out.push_back(entry.path().string());
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+CaseDraft draft_case(const std::vector<SurveyedLanguage>& languages, const std::string& case_path,
+                     const std::vector<std::string>& images) {
+  const fs::path root = shader_root_of(fs::absolute(case_path).lexically_normal().string());
+  Writer w;
+  if (languages.empty()) return {};
+
+  // Guess everything first: the parameters and the ambient colour go above the bindings.
+  std::vector<LanguageGuesses> guesses;
+  std::map<std::string, std::pair<ParameterGuess, std::vector<std::string>>> parameters;
+  bool uses_ambient = false;
+  for (const SurveyedLanguage& s : languages) {
+    LanguageGuesses lg{&s, {}};
+    GuessContext context{.language = s.language};
+    for (const UniformFacts& u : s.uniforms)
+      if (u.columns > 1) {
+        const auto g = guess_uniform(u, context);
+        if (!g.sources.empty() && g.sources[0].name == "world") context.has_world_matrix = true;
+      }
+    for (const UniformFacts& u : s.uniforms) {
+      UniformGuess g = guess_uniform(u, context);
+      if (g.parameter) {
+        auto& [p, users] = parameters.try_emplace(g.parameter->name, *g.parameter, std::vector<std::string>{}).first->second;
+        users.push_back(u.name);
+      }
+      for (const BindingSource& source : g.sources) uses_ambient |= source.name == "ambient_light";
+      lg.uniforms.push_back({&u, std::move(g)});
+    }
+    guesses.push_back(std::move(lg));
+  }
+
+  std::string names;
+  std::set<std::string> listed;
+  for (const SurveyedLanguage& s : languages)
+    for (const std::string& f : {s.files.vertex, s.files.fragment})
+      if (listed.insert(f).second) names += (names.empty() ? "" : ", ") + fs::path(f).filename().string();
+  const SurveyedLanguage& original = languages.front();
+  w.line("# Case written by `shaderbed init` from " + names + ": check the TODOs.");
+  w.line("# A differential case: no model; every cell is judged against the reference render of the");
+  w.line("# first language given (the original). Run it: shaderbed run --case " + fs::path(case_path).filename().string());
+  std::string description = fs::path(original.files.fragment).filename().string() + " (" + to_string(original.language) + ")";
+  if (languages.size() == 1) {
+    description += " drawn on every backend and path against its own Vulkan SPIR-V render";
+  } else {
+    description += " against its port" + std::string(languages.size() > 2 ? "s" : "") + " in";
+    for (size_t i = 1; i < languages.size(); ++i) description += std::string(i > 1 ? "," : "") + " " + to_string(languages[i].language);
+  }
+  w.line("description = " + toml_string(description));
+  w.line("reference = { language = " + toml_string(to_string(original.language)) + ", backend = \"vulkan\", path = \"spirv\" }");
+  if (uses_ambient)
+    w.commented("ambient = [0.1, 0.1, 0.1]", "the scene's ambient light colour, what ambient_light binds");
+
+  if (!parameters.empty()) {
+    w.line();
+    w.line("[params]");
+    for (const auto& [name, entry] : parameters) {
+      std::string users;
+      for (const std::string& u : entry.second) users += (users.empty() ? "'" : ", '") + u + "'";
+      w.commented(toml_key(name) + " = " + numbers(entry.first.value), entry.first.reason + " (for " + users + ")");
+    }
+  }
+
+  w.line();
+  w.line("[variants.pixel]");
+  for (const SurveyedLanguage& s : languages) {
+    std::string files = toml_key(to_string(s.language)) + " = { vertex = " + toml_string(relative_to(root, s.files.vertex)) +
+                        ", fragment = " + toml_string(relative_to(root, s.files.fragment));
+    if (!s.files.technique.empty()) {
+      files += ", technique = " + toml_string(s.files.technique);
+      if (!s.files.pass.empty()) files += ", pass = " + toml_string(s.files.pass);
+    } else if (s.language != Language::glsl) {
+      files += ", vertex_entry = " + toml_string(s.files.vertex_entry) + ", fragment_entry = " + toml_string(s.files.fragment_entry);
+    }
+    std::string note;
+    for (const std::string& n : s.notes) note += (note.empty() ? "" : "; ") + n;
+    w.commented(files + " }", note);
+  }
+
+  for (const LanguageGuesses& lg : guesses) {
+    const SurveyedLanguage& s = *lg.survey;
+    const std::string table = std::string("[bindings.") + to_string(s.language) + "]";
+    if (!s.compile_error.empty()) {
+      w.line();
+      w.line(table);
+      w.todo("", "make " + std::string(to_string(s.language)) + " compile, then bind its uniforms here (or run init again "
+                 "with --force): " + s.compile_error);
+      continue;
+    }
+    if (lg.uniforms.empty()) continue;
+    w.line();
+    w.line(table);
+    for (const auto& [u, g] : lg.uniforms) {
+      const std::string key = toml_key(u->name);
+      if (g.bound_by_default) w.commented("# " + key, g.reason);
+      else if (g.todo()) w.todo("# " + key + " = " + numbers(g.placeholder), g.reason + ", under " + table);
+      else w.commented(key + " = " + binding_value(g), g.reason);
+    }
+  }
+
+  for (const SurveyedLanguage& s : languages) {
+    std::vector<std::pair<std::string, std::string>> mapped;   // line, comment
+    std::vector<std::pair<std::string, std::string>> unmapped;
+    for (const StageInput& input : s.inputs) {
+      // HLSL/Cg inputs are placed by their semantics.
+      if (s.language != Language::glsl && !input.semantic.empty()) continue;
+      if (input.name.starts_with("gl_")) continue;
+      if (auto a = guess_attribute(input.name))
+        mapped.push_back({toml_key(input.name) + " = " + toml_string(a->attribute), a->reason});
+      else
+        unmapped.push_back({"# " + toml_key(input.name) + " = \"position\"",
+                            "map vertex input '" + input.name + "' (location " + std::to_string(input.location) +
+                                ") to position, normal, tangent, texcoord or color"});
+    }
+    if (mapped.empty() && unmapped.empty()) continue;
+    w.line();
+    w.line(std::string("[attributes.") + to_string(s.language) + "]");
+    for (const auto& [code, why] : mapped) w.commented(code, why);
+    for (const auto& [code, why] : unmapped) w.todo(code, why);
+  }
+
+  // Textures by the names each language's shaders declare; one [textures] table when
+  // every language names them alike.
+  std::vector<std::pair<Language, std::vector<SamplerBinding>>> textures;
+  for (const SurveyedLanguage& s : languages)
+    if (!s.samplers.empty()) textures.push_back({s.language, s.samplers});
+  const auto names_of = [](const std::vector<SamplerBinding>& list) {
+    std::set<std::string> out;
+    for (const SamplerBinding& b : list) out.insert(b.name);
+    return out;
+  };
+  const bool common = std::all_of(textures.begin(), textures.end(), [&](const auto& t) {
+    return names_of(t.second) == names_of(textures.front().second);
+  }) && (textures.size() == languages.size() || textures.size() <= 1);
+  for (size_t i = 0; i < textures.size(); ++i) {
+    if (common && i > 0) break;
+    const auto& [language, samplers] = textures[i];
+    w.line();
+    w.line(common ? "[textures]" : std::string("[textures.") + to_string(language) + "]");
+    for (const SamplerBinding& b : samplers) {
+      const std::string key = toml_key(b.name);
+      if (b.kind == SamplerKind::sampler) {
+        w.commented(key + " = { filter = \"linear\", address = \"wrap\" }", "a guess: a sampler state's usual settings");
+        continue;
+      }
+      if (b.cube) {
+        w.todo("# " + key + " = { file = [\"+x.png\", \"-x.png\", \"+y.png\", \"-y.png\", \"+z.png\", \"-z.png\"] }",
+               "bind cube map '" + b.name + "' to six image files (+X, -X, +Y, -Y, +Z, -Z)");
+        continue;
+      }
+      const auto [image, why] = image_for(b.name, images);
+      if (image.empty())
+        w.todo("# " + key + " = { file = \"FILE.png\" }", "bind texture '" + b.name + "' to an image file");
+      else
+        w.commented(key + " = { file = " + toml_string(relative_to(root, image)) + " }", why);
+    }
+  }
+
+  w.line();
+  w.line("# no [tolerance]: differential cases default to a documented fp32 bound relative to the pixel's magnitude");
+  std::string text = w.text();
+  // The header asks for the TODOs only when there are some (same line count either way).
+  if (w.todos().empty()) text.replace(text.find("check the TODOs."), 16, "check its guesses.");
+  return {std::move(text), w.todos()};
+}
+
+}  // namespace shaderbed

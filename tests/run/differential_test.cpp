@@ -1,0 +1,182 @@
+// Differential cases through the CLI: a case without a model is judged against a render of
+// the original (tests/differential/), or against the images a known-good run stored.
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "ShellCommand.h"
+#include "TempDir.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+const fs::path kCorpus = fs::path(SHADERBED_SOURCE_DIR) / "tests" / "differential";
+
+std::pair<int, std::string> shaderbed_cli(const std::string& args) {
+  return shaderbed::test::run_shell(std::string(SHADERBED_BINARY) + " " + args);
+}
+
+json read_json(const std::string& path) {
+  std::ifstream in(path);
+  return json::parse(in);
+}
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void replace_once(const fs::path& file, const std::string& from, const std::string& to) {
+  std::string text = read_text(file);
+  const size_t at = text.find(from);
+  ASSERT_NE(at, std::string::npos) << from << " not in " << file;
+  text.replace(at, from.size(), to);
+  std::ofstream(file) << text;
+}
+
+// A copy of the corpus a test may change.
+fs::path copy_corpus(const shaderbed::test::TempDir& dir) {
+  fs::copy(kCorpus, dir.path() / "differential", fs::copy_options::recursive);
+  return dir.path() / "differential";
+}
+
+TEST(Differential, OriginalAndCorrectPortPassOnEveryBackendAndPath) {
+  shaderbed::test::TempDir dir("differential");
+  for (const char* name : {"tinted_diffuse", "glossy"}) {
+    const std::string results = dir / (std::string(name) + ".json");
+    const auto [status, out] = shaderbed_cli("run --case " + (kCorpus / "cases" / (std::string(name) + ".toml")).string() +
+                                             " --variant original,port --size 48 --repeat 0 -q --json " + results);
+    ASSERT_EQ(status, 0) << out;
+    const json j = read_json(results);
+    std::map<std::string, int> paths;   // language/backend/path -> cells
+    int references = 0;
+    for (const json& r : j["results"]) {
+      EXPECT_EQ(r["status"], "pass") << r["id"] << ": " << r["message"];
+      EXPECT_EQ(r["reference"]["kind"], "render");
+      EXPECT_EQ(r["reference"]["label"], "hlsl vulkan/spirv (variant original)");
+      ++paths[r["language"].get<std::string>() + "/" + r["backend"].get<std::string>() + "/" + r["path"].get<std::string>()];
+      if (r["reference"]["is_reference"].get<bool>()) {
+        ++references;
+        EXPECT_EQ(r["language"], "hlsl");
+        EXPECT_EQ(r["backend"], "vulkan");
+        EXPECT_EQ(r["metrics"]["max_abs"], 0.0);   // judged against itself
+      }
+      // The documented fp32 bound, with its reason, is in every cell.
+      EXPECT_GT(r["tolerance"]["interior_rel"].get<double>(), 0.0);
+      EXPECT_NE(r["tolerance"]["reason"].get<std::string>().find("differential default"), std::string::npos);
+    }
+    EXPECT_EQ(references, 4) << "the original on vulkan/spirv is each shape's reference";
+    // hlsl on vulkan/spirv, gl/spirv, gl/cross; glsl on those and gl/glsl: four shapes each.
+    EXPECT_EQ(paths.size(), 7u);
+    for (const auto& [path, cells] : paths) EXPECT_EQ(cells, 4) << path;
+  }
+}
+
+TEST(Differential, PortsWithAPlantedConventionFailAndBlameThePort) {
+  shaderbed::test::TempDir dir("differential");
+  const std::string results = dir / "planted.json";
+  const auto [status, out] =
+      shaderbed_cli("run --case " + (kCorpus / "cases" / "tinted_diffuse.toml").string() +
+                    " --variant factor_pi,gamma,light_negated --shape sphere --size 48 --repeat 0 -q --json " + results);
+  EXPECT_EQ(status, 1) << out;
+  const json j = read_json(results);
+  ASSERT_EQ(j["results"].size(), 12u);
+  for (const json& r : j["results"]) {
+    EXPECT_EQ(r["status"], "fail") << r["id"];
+    EXPECT_EQ(r["attribution"]["verdict"], "port") << r["id"] << ": " << r["attribution"]["reason"];
+  }
+  EXPECT_NE(out.find("judged against: the original, hlsl vulkan/spirv"), std::string::npos) << out;
+}
+
+TEST(Differential, TheReferenceIsDrawnEvenWhenItsBackendIsFilteredOut) {
+  const auto [status, out] = shaderbed_cli("run --case " + (kCorpus / "cases" / "glossy.toml").string() +
+                                           " --variant port --backend gl --shape torus --size 48 --repeat 0 -q");
+  EXPECT_EQ(status, 0) << out;
+  EXPECT_NE(out.find("3 cells: 3 passed"), std::string::npos) << out;
+}
+
+TEST(Differential, StoredImagesPassOnARerunAndFailAfterAOneLineChange) {
+  shaderbed::test::TempDir dir("stored");
+  const fs::path corpus = copy_corpus(dir);
+  const std::string the_case = (corpus / "cases" / "glossy.toml").string();
+  const std::string stored = dir / "known_good";
+  const std::string common = " --variant port --shape sphere,cone --size 48 --repeat 0 -q";
+  {
+    const auto [status, out] = shaderbed_cli("run --case " + the_case + common + " --save-images " + stored);
+    ASSERT_EQ(status, 0) << out;
+    EXPECT_TRUE(fs::exists(fs::path(stored) / "manifest.json"));
+    EXPECT_TRUE(fs::exists(fs::path(stored) / "glossy" / "port" / "sphere" / "glsl-vulkan-spirv.exr"));
+  }
+  const std::string results = dir / "against.json";
+  {
+    const auto [status, out] = shaderbed_cli("run --case " + the_case + common + " --against " + stored + " --json " + results);
+    EXPECT_EQ(status, 0) << out;
+    const json j = read_json(results);
+    ASSERT_EQ(j["results"].size(), 8u);
+    for (const json& r : j["results"]) {
+      EXPECT_EQ(r["status"], "pass") << r["id"] << ": " << r["message"];
+      EXPECT_EQ(r["reference"]["kind"], "images");
+      EXPECT_EQ(r["reference"]["toolchain_note"], "") << "the same toolchain drew both";
+      EXPECT_EQ(r["metrics"]["max_abs"], 0.0) << "the same drivers draw the same image, bit for bit";
+    }
+  }
+  // One line of the port changes: every cell fails against the stored run.
+  replace_once(corpus / "glsl" / "glossy.frag", "Base * clamp(nl, 0.0, 1.0)", "Base * clamp(nl, 0.0, 1.0) * 0.98");
+  {
+    const auto [status, out] = shaderbed_cli("run --case " + the_case + common + " --against " + stored + " --json " + results);
+    EXPECT_EQ(status, 1) << out;
+    for (const json& r : read_json(results)["results"]) EXPECT_EQ(r["status"], "fail") << r["id"];
+  }
+  // A case may name the stored run as its reference; a different toolchain is reported beside the verdict.
+  const fs::path manifest = fs::path(stored) / "manifest.json";
+  replace_once(manifest, "\"glslang\": \"", "\"glslang\": \"0.0-stored-");
+  replace_once(corpus / "glsl" / "glossy.frag", "Base * clamp(nl, 0.0, 1.0) * 0.98", "Base * clamp(nl, 0.0, 1.0)");
+  replace_once(corpus / "cases" / "glossy.toml",
+               "reference = { language = \"hlsl\", backend = \"vulkan\", path = \"spirv\", variant = \"original\" }",
+               "reference = { images = \"known_good\" }");   // from the folder above cases/, as shader paths
+  fs::rename(stored, corpus / "known_good");
+  {
+    const auto [status, out] = shaderbed_cli("run --case " + the_case + common + " --json " + results);
+    EXPECT_EQ(status, 0) << out;
+    for (const json& r : read_json(results)["results"]) {
+      EXPECT_EQ(r["status"], "pass") << r["id"];
+      EXPECT_NE(r["reference"]["toolchain_note"].get<std::string>().find("glslang 0.0-stored-"), std::string::npos);
+    }
+  }
+}
+
+TEST(Differential, StoredImagesOfAnotherSizeOrSceneAreClearErrors) {
+  shaderbed::test::TempDir dir("stored");
+  const fs::path corpus = copy_corpus(dir);
+  const std::string the_case = (corpus / "cases" / "glossy.toml").string();
+  const std::string stored = dir / "known_good";
+  const std::string common = " --variant port --lang glsl --backend vulkan --shape sphere --repeat 0 -q";
+  ASSERT_EQ(shaderbed_cli("run --case " + the_case + common + " --size 48 --save-images " + stored).first, 0);
+  {
+    const auto [status, out] = shaderbed_cli("run --case " + the_case + common + " --size 32 --against " + stored);
+    EXPECT_EQ(status, 2) << out;
+    EXPECT_NE(out.find("the stored images are 48x48; this run draws 32x32 (run with --size 48)"), std::string::npos) << out;
+  }
+  {
+    const auto [status, out] =
+        shaderbed_cli("run --case " + the_case + common + " --size 48 --param sharpness=30 --against " + stored);
+    EXPECT_EQ(status, 1) << out;
+    EXPECT_NE(out.find("drawn with another scene"), std::string::npos) << out;
+  }
+  {
+    const auto [status, out] = shaderbed_cli("run --case " + the_case + common + " --size 48 --against " + (dir / "nowhere"));
+    EXPECT_EQ(status, 2) << out;
+    EXPECT_NE(out.find("no manifest.json"), std::string::npos) << out;
+  }
+}
+
+}  // namespace
