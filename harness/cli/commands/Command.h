@@ -25,6 +25,7 @@ Command add_hard_command(CLI::App& app);
 Command add_bench_command(CLI::App& app);
 Command add_devices_command(CLI::App& app);
 Command add_init_command(CLI::App& app);
+Command add_port_command(CLI::App& app);
 
 // --cache-dir, --no-driver-cache, --no-compile-cache on the root app, accepted after any
 // subcommand too (CacheOptions.cpp). Call after adding the subcommands and before any
