@@ -83,6 +83,29 @@ std::vector<std::string> model_names();
 std::expected<Framebuffer, std::string> render(const Scene& scene, const std::string& model, Mode mode,
                                                const Params& params);
 
+// A convention the model is rendered under instead of the correct one, so the harness can
+// ask "does the render match the reference if the shader had done X?" (counterfactual
+// references). Applied where the lighting of each shaded point is built (per pixel, or
+// per vertex in per-vertex mode), never inside a model, so every model gets it alike:
+//  - negate_light: L -> -L. For a model lit by the directional light, its direction is
+//    negated; for one lit by the point light (point_attenuated, spot, warn, or any model
+//    with SceneLight::point) the light moves to 2P - Lp at each shaded point P, so its
+//    distance is kept and only its direction flips. The spot and Warn lights' axis (the
+//    directional light's vector) is left as it is: it is not their L.
+//  - negate_eye: the eye moves to 2P - eye at each shaded point (V -> -V).
+//  - unnormalised_normal: per pixel, shade with the interpolated normal as it arrives,
+//    not renormalised (a shader that forgot normalize()); per vertex, no change (the
+//    vertex normals are shaded as they are in the normal render).
+struct Perturbation {
+  bool negate_light = false;
+  bool negate_eye = false;
+  bool unnormalised_normal = false;
+};
+
+// render() under a perturbation; Perturbation{} gives exactly render()'s image.
+std::expected<Framebuffer, std::string> render(const Scene& scene, const std::string& model, Mode mode,
+                                               const Params& params, const Perturbation& perturbation);
+
 // ---- One configuration at a time (`shaderbed eval`) -------------------------------------
 
 // docs/models.md's defaults (the book's values) for every parameter the named model

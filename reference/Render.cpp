@@ -5,85 +5,86 @@
 
 #include "reference/ModelRegistry.h"
 #include "reference/ObjectSpace.h"
-#include "reference/Rasteriser.h"
-#include "reference/SceneLighting.h"
 #include "reference/Reference.h"
+#include "reference/SceneLighting.h"
+#include "reference/VisibleSurface.h"
 
 namespace reference {
 namespace {
-
-std::expected<void, std::string> check_scene(const Scene& scene) {
-  if (scene.width <= 0 || scene.height <= 0) {
-    return std::unexpected("image size " + std::to_string(scene.width) + "x" + std::to_string(scene.height) +
-                           " is empty");
-  }
-  if (scene.mesh.indices.size() % 3 != 0) {
-    return std::unexpected("mesh has " + std::to_string(scene.mesh.indices.size()) +
-                           " indices, not a multiple of 3 (triangle list)");
-  }
-  const size_t vertex_count = scene.mesh.vertices.size();
-  for (uint32_t index : scene.mesh.indices) {
-    if (index >= vertex_count) {
-      return std::unexpected("mesh index " + std::to_string(index) + " out of range (" + std::to_string(vertex_count) +
-                             " vertices)");
-    }
-  }
-  return {};
-}
 
 template <typename T>
 T interpolate(const std::array<uint32_t, 3>& corners, const glm::dvec3& weights, const std::vector<T>& values) {
   return weights[0] * values[corners[0]] + weights[1] * values[corners[1]] + weights[2] * values[corners[2]];
 }
 
+// The lighting one shaded point sees: the scene's, or the scene's under a perturbation.
+// Built here, once per shaded point, so no model needs to know about perturbations.
+class PointLighting {
+ public:
+  PointLighting(const ObjectSpaceLighting& lighting, const Perturbation& perturbation, LightUse light_use)
+      : lighting_(lighting),
+        perturbation_(perturbation),
+        // Only the directional-light models take light_direction as L; the spot and Warn
+        // lights take it as their axis, which L -> -L leaves alone.
+        negate_direction_(perturbation.negate_light && light_use == LightUse::directional) {}
+
+  ObjectSpaceLighting at(const glm::dvec3& position) const {
+    ObjectSpaceLighting at_point = lighting_;
+    if (negate_direction_) at_point.light_direction = -lighting_.light_direction;
+    // Reflecting the point light through P flips Lp and keeps its distance; a model lit
+    // by the directional light never reads the position, so this is harmless for it.
+    if (perturbation_.negate_light) at_point.light_position = 2.0 * position - lighting_.light_position;
+    if (perturbation_.negate_eye) at_point.eye_position = 2.0 * position - lighting_.eye_position;
+    return at_point;
+  }
+
+ private:
+  ObjectSpaceLighting lighting_;
+  Perturbation perturbation_;
+  bool negate_direction_;
+};
+
 // Per vertex: shade each vertex with its own (unit) normal; pixels interpolate colours.
-std::vector<glm::dvec3> shade_vertices(const Mesh& mesh, const LightingModel& model,
-                                       const ObjectSpaceLighting& lighting) {
+std::vector<glm::dvec3> shade_vertices(const Mesh& mesh, const LightingModel& model, const PointLighting& lighting) {
   std::vector<glm::dvec3> colours;
   colours.reserve(mesh.vertices.size());
   for (const Vertex& vertex : mesh.vertices) {
-    colours.push_back(
-        model.shade({vertex.position, glm::normalize(vertex.normal), vertex.tangent, vertex.uv}, lighting));
+    colours.push_back(model.shade({vertex.position, glm::normalize(vertex.normal), vertex.tangent, vertex.uv},
+                                  lighting.at(vertex.position)));
   }
   return colours;
 }
 
 // Per pixel: interpolate the vertex attributes as given (like the varyings a vertex
-// shader passes through), normalise the normal, shade.
-glm::dvec3 shade_pixel(const Mesh& mesh, const std::array<uint32_t, 3>& corners, const glm::dvec3& weights,
-                       const LightingModel& model, const ObjectSpaceLighting& lighting) {
-  SurfacePoint point{};
-  for (int i = 0; i < 3; ++i) {
-    const Vertex& vertex = mesh.vertices[corners[i]];
-    point.position += weights[i] * vertex.position;
-    point.normal += weights[i] * vertex.normal;
-    point.tangent += weights[i] * vertex.tangent;
-    point.uv += weights[i] * vertex.uv;
-  }
-  point.normal = glm::normalize(point.normal);
-  return model.shade(point, lighting);
+// shader passes through), normalise the normal (unless the perturbation says not to),
+// shade.
+glm::dvec3 shade_pixel(const Mesh& mesh, const VisibleSample& sample, const LightingModel& model,
+                       const PointLighting& lighting, const Perturbation& perturbation) {
+  SurfacePoint point = interpolate_surface(mesh, sample);
+  if (!perturbation.unnormalised_normal) point.normal = glm::normalize(point.normal);
+  return model.shade(point, lighting.at(point.position));
 }
 
 }  // namespace
 
 std::expected<Framebuffer, std::string> render(const Scene& scene, const std::string& model_name, Mode mode,
                                                const Params& params) {
+  return render(scene, model_name, mode, params, Perturbation{});
+}
+
+std::expected<Framebuffer, std::string> render(const Scene& scene, const std::string& model_name, Mode mode,
+                                               const Params& params, const Perturbation& perturbation) {
   auto built = make_model(model_name, params);
   if (!built) return std::unexpected(built.error());
   auto model = with_scene_lighting(std::move(*built), model_name, scene.light, scene.ambient);
   if (!model) return std::unexpected(model.error());
-  if (auto valid = check_scene(scene); !valid) return std::unexpected(valid.error());
+  auto visibility = rasterise_scene(scene);
+  if (!visibility) return std::unexpected(visibility.error());
 
   const Mesh& mesh = scene.mesh;
-  const double aspect = double(scene.width) / scene.height;
-  const glm::dmat4 object_to_clip = projection_matrix(scene.camera, aspect) * view_matrix(scene.camera) * scene.world;
-  std::vector<glm::dvec4> clip_positions;
-  clip_positions.reserve(mesh.vertices.size());
-  for (const Vertex& vertex : mesh.vertices)
-    clip_positions.push_back(object_to_clip * glm::dvec4(vertex.position, 1.0));
-
-  const VisibilityBuffer visibility = rasterise(clip_positions, mesh.indices, scene.width, scene.height);
-  const ObjectSpaceLighting lighting = to_object_space(scene.lights, scene.camera, scene.world);
+  const ModelInfo* info = find_model(model_name);
+  const PointLighting lighting(to_object_space(scene.lights, scene.camera, scene.world), perturbation,
+                               info ? info->light : LightUse::none);
   const std::vector<glm::dvec3> vertex_colours =
       mode == Mode::per_vertex ? shade_vertices(mesh, **model, lighting) : std::vector<glm::dvec3>{};
 
@@ -91,12 +92,11 @@ std::expected<Framebuffer, std::string> render(const Scene& scene, const std::st
   Framebuffer image{scene.width, scene.height, std::vector<double>(pixel_count * 4, 0.0),
                     std::vector<uint8_t>(pixel_count, 0)};
   for (size_t pixel = 0; pixel < pixel_count; ++pixel) {
-    const VisibleSample& sample = visibility.samples[pixel];
+    const VisibleSample& sample = visibility->samples[pixel];
     if (!sample.covered()) continue;
-    const size_t first = size_t{sample.triangle} * 3;
-    const std::array<uint32_t, 3> corners{mesh.indices[first], mesh.indices[first + 1], mesh.indices[first + 2]};
-    const glm::dvec3 colour = mode == Mode::per_vertex ? interpolate(corners, sample.weights, vertex_colours)
-                                                       : shade_pixel(mesh, corners, sample.weights, **model, lighting);
+    const glm::dvec3 colour = mode == Mode::per_vertex
+                                  ? interpolate(triangle_corners(mesh, sample), sample.weights, vertex_colours)
+                                  : shade_pixel(mesh, sample, **model, lighting, perturbation);
     image.rgba[pixel * 4 + 0] = colour.r;
     image.rgba[pixel * 4 + 1] = colour.g;
     image.rgba[pixel * 4 + 2] = colour.b;

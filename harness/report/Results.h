@@ -46,9 +46,9 @@ struct CellMetrics {
 
 struct CellArtefacts {                // paths under the run's --out folder ("" = not written)
   std::string render_exr, render_png, error_exr, error_png, reference_png;
-  std::string stored_exr;                              // run --save-images: the image later runs compare with
   std::string vertex_spirv, fragment_spirv;            // disassembly (.spvasm)
   std::string vertex_cross_glsl, fragment_cross_glsl;  // SPIRV-Cross output
+  std::string stored_exr;                              // run --save-images: the image later runs compare with
 };
 
 // A median with its confidence interval (timing/MedianInterval).

@@ -70,6 +70,33 @@ Result<void> CaseTextures::check(const CompiledProgram& program) {
   return {};
 }
 
+namespace {
+
+// Rows of one level (texels of `channels` floats) in reverse order.
+void reverse_rows(std::vector<float>& texels, size_t height) {
+  if (height < 2) return;
+  const size_t row = texels.size() / height;
+  for (size_t y = 0; y < height / 2; ++y)
+    std::swap_ranges(texels.begin() + std::ptrdiff_t(y * row), texels.begin() + std::ptrdiff_t((y + 1) * row),
+                     texels.begin() + std::ptrdiff_t((height - 1 - y) * row));
+}
+
+}  // namespace
+
+bool CaseTextures::flip_images_vertically() {
+  bool flipped = false;
+  for (auto& [name, texture] : loaded_) {
+    if (texture->cube || texture->dimensions != 2) continue;
+    Texture copy = *texture;
+    reverse_rows(copy.texels, copy.height);
+    size_t h = copy.height;
+    for (std::vector<float>& level : copy.mip_levels) reverse_rows(level, h = std::max<size_t>(1, h / 2));
+    texture = std::make_shared<const Texture>(std::move(copy));
+    flipped = true;
+  }
+  return flipped;
+}
+
 std::string CaseTextures::reference_note() const {
   if (loaded_.empty()) return "";
   std::vector<std::string> names;

@@ -32,6 +32,11 @@ class CaseTextures final : public TextureResolver {
   Result<const Texture*> texture(const SamplerBinding& sampler) const override;
   Result<SamplerSettings> settings(const SamplerBinding& sampler) const override;
 
+  // After check(): every 2D image file upside down (each level's rows reversed), as a
+  // port that samples at (u, 1 - v) sees it: the original drawn so is that port's
+  // counterfactual (compare/ConventionFit.h). False when no 2D file is bound.
+  bool flip_images_vertically();
+
   // After check(): "" when the draw reads no image file, else the note every report
   // carries for the cell: the reference models read no texture, so the files are not in
   // the reference (the case's parameters stand for them).

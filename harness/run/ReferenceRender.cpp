@@ -1,10 +1,13 @@
 #include "run/ReferenceRender.h"
 
+#include "reference/ModelRegistry.h"
 #include "reference/Reference.h"
+#include "reference/Surface.h"
 
 namespace shaderbed {
+namespace {
 
-Result<ReferenceImage> render_reference(const Mesh& mesh, const SceneSetup& s, const Case& c, LightingMode mode) {
+reference::Scene reference_scene(const Mesh& mesh, const SceneSetup& s, const Case& c) {
   reference::Scene scene;
   scene.mesh.indices = mesh.indices;
   scene.mesh.vertices.reserve(mesh.vertices.size());
@@ -21,11 +24,33 @@ Result<ReferenceImage> render_reference(const Mesh& mesh, const SceneSetup& s, c
   scene.ambient = c.ambient.value_or(s.lights.ambient);
   scene.width = s.width;
   scene.height = s.height;
-  auto fb = reference::render(scene, c.model,
+  return scene;
+}
+
+}  // namespace
+
+Result<ReferenceImage> render_reference(const Mesh& mesh, const SceneSetup& s, const Case& c, LightingMode mode) {
+  return render_reference(mesh, s, c, mode, reference::Perturbation{});
+}
+
+Result<ReferenceImage> render_reference(const Mesh& mesh, const SceneSetup& s, const Case& c, LightingMode mode,
+                                        const reference::Perturbation& perturbation) {
+  auto fb = reference::render(reference_scene(mesh, s, c), c.model,
                               mode == LightingMode::per_vertex ? reference::Mode::per_vertex : reference::Mode::per_pixel,
-                              c.params);
+                              c.params, perturbation);
   if (!fb) return std::unexpected(Error{.message = fb.error(), .file = c.path, .stage = "reference"});
   return ReferenceImage{fb->width, fb->height, std::move(fb->rgba), std::move(fb->coverage)};
+}
+
+Result<SurfaceSamples> render_surface_samples(const Mesh& mesh, const SceneSetup& s, const Case& c) {
+  reference::Scene scene = reference_scene(mesh, s, c);
+  // The point-light models shade with the point light whatever the case says.
+  const reference::ModelInfo* model = reference::find_model(c.model);
+  if (model && (model->light == reference::LightUse::point || model->light == reference::LightUse::spot))
+    scene.light = reference::SceneLight::point;
+  auto surface = reference::render_surface(scene);
+  if (!surface) return std::unexpected(Error{.message = surface.error(), .file = c.path, .stage = "reference"});
+  return surface_samples(*surface);
 }
 
 }  // namespace shaderbed

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <deque>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
@@ -26,7 +27,9 @@
 #include "run/StoredImages.h"
 #include "core/Fnv1a.h"
 #include "run/Toolchain.h"
+#include "reference/Reference.h"
 #include "compare/Attribution.h"
+#include "compare/ConventionFit.h"
 #include "compare/ImageComparison.h"
 #include "compare/ImageFiles.h"
 #include "backends/MesaEnvironment.h"
@@ -85,6 +88,13 @@ GpuTiming gpu_timing(const RenderTimings& t, const TimingRequest& request) {
   return {t.gpu_clock, request.warmup, int(t.gpu_ms.size()), interval(t.gpu_ms), interval(t.wall_ms)};
 }
 
+// A re-draw of the original under a convention a port may get wrong (a counterfactual).
+struct Variation {
+  const SceneSetup* scene = nullptr;        // null: the run's
+  const BindingTable* bindings = nullptr;   // null: the case's for the cell's language
+  bool flip_images = false;                 // every 2D image file upside down
+};
+
 // The stored runs this run compares with, loaded (and checked) before anything is drawn.
 struct StoredReferences {
   std::map<std::string, StoredRun> runs;                  // by folder
@@ -129,6 +139,7 @@ class GroupRunner {
     // --against DIR, or the case's `reference = { images = "DIR" }`: each cell its own image.
     const std::string& stored_dir = o_.against_dir.empty() ? c.reference_images : o_.against_dir;
     const StoredRun* stored = stored_dir.empty() ? nullptr : &stored_.runs.at(stored_dir);
+    stored_evidence_.reset();
 
     // The reference: the model in double, or the original's render (drawn first; when it is
     // one of the group's cells, that cell's own draw is the reference).
@@ -173,6 +184,7 @@ class GroupRunner {
         const Result<ReferenceImage> own = load_stored_image(*stored, r.id(), scene_hash);
         judged = own ? judge_cell(*image, *own, classify_pixels(*own), dir, r)
                      : Result<void>(std::unexpected(own.error()));
+        if (judged && r.status == "fail") explain_cell(*image, *own, classify_pixels(*own), stored_evidence(c, mesh), r);
       } else if (judged) {
         judged = reference ? judge_cell(*image, *reference, classes_, dir, r)
                            : Result<void>(std::unexpected(reference.error()));
@@ -188,7 +200,10 @@ class GroupRunner {
       }
       results.push_back(std::move(r));
     }
-    if (reference && !stored) attribute(g, results, images, rendered_cells, *reference, thresholds);
+    if (reference && !stored) {
+      attribute(g, results, images, rendered_cells, *reference, thresholds);
+      explain(g, mesh, lut, results, images, rendered_cells, *reference);
+    }
     return results;
   }
 
@@ -202,6 +217,133 @@ class GroupRunner {
     CellResult result;
     Image image;
   };
+
+  // Which named convention explains each failing cell (compare/ConventionFit.h). The fits
+  // use the surface's N·L and |n|, and the reference drawn again under each convention a
+  // port may get wrong (the model re-rendered, or the original re-drawn with the light
+  // negated, its matrices transposed, its images upside down); made once per group, and
+  // only when a cell failed.
+  void explain(const CellGroup& g, const Mesh& mesh, const Result<const Texture*>& lut, std::vector<CellResult>& results,
+               const std::vector<Image>& images, const std::vector<size_t>& rendered, const ReferenceImage& reference) {
+    if (std::ranges::none_of(rendered, [&](size_t i) { return results[i].status == "fail"; })) return;
+    const Case& c = *g.c;
+    Evidence evidence = surface_evidence(c, mesh);
+    const auto add = [&](Result<ReferenceImage> image, const char* name, const char* detail) {
+      if (!image) return;
+      evidence.images.push_back(std::move(*image));
+      evidence.counterfactuals.push_back({name, detail, &evidence.images.back()});
+    };
+    if (!c.differential()) {
+      const LightingMode mode = o_.per_pixel_reference ? LightingMode::per_pixel : g.variant->mode;
+      add(render_reference(mesh, scene_, c, mode, {.negate_light = true}), "negated_light",
+          "the light vector negated (L → −L)");
+      add(render_reference(mesh, scene_, c, mode, {.negate_eye = true}), "negated_eye", "the eye vector negated (V → −V)");
+      if (mode == LightingMode::per_pixel)
+        add(render_reference(mesh, scene_, c, mode, {.unnormalised_normal = true}), "unnormalised_normal_model",
+            "the interpolated normal not renormalised");
+    } else if (g.reference_cell) {
+      const auto redraw = [&](const Variation& variation) -> Result<ReferenceImage> {
+        CellResult scratch;
+        auto image = draw_cell(c, *g.reference_variant, *g.reference_cell, mesh, lut, {.warmup = 0, .runs = 1}, scratch,
+                               variation);
+        if (!image) return std::unexpected(image.error());
+        return as_reference(*image);
+      };
+      SceneSetup negated = scene_;
+      negated.lights.direction = -negated.lights.direction;
+      add(redraw({.scene = &negated}), "negated_light", "the light vector negated (L → −L)");
+      if (const auto transposed = transposed_matrices(c, g.reference_cell->language))
+        add(redraw({.bindings = &*transposed}), "transposed_matrices",
+            "its matrices in the other row/column convention (transposed)");
+      add(redraw({.flip_images = true}), "flipped_texture_v", "its textures upside down (v → 1 − v)");
+      // D3D9 put pixel centres on integers: a port that keeps (or adds) that offset draws
+      // everything half a pixel off, in one of four directions.
+      static const char* const kShifts[] = {"the geometry half a pixel right and up (D3D9 pixel centres)",
+                                            "the geometry half a pixel left and up (D3D9 pixel centres)",
+                                            "the geometry half a pixel right and down (D3D9 pixel centres)",
+                                            "the geometry half a pixel left and down (D3D9 pixel centres)"};
+      for (int k = 0; k < 4; ++k) {
+        SceneSetup shifted = scene_;
+        shifted.clip_offset = {(k % 2 ? -1.0 : 1.0) / scene_.width, (k / 2 ? -1.0 : 1.0) / scene_.height};
+        add(redraw({.scene = &shifted}), "half_pixel_offset_redrawn", kShifts[k]);
+      }
+    }
+    for (size_t i = 0; i < rendered.size(); ++i)
+      if (results[rendered[i]].status == "fail") explain_cell(images[i], reference, classes_, evidence, results[rendered[i]]);
+  }
+
+  // What the fits may use besides the two images; the images behind the counterfactuals
+  // live here (a deque keeps their addresses).
+  struct Evidence {
+    std::optional<SurfaceSamples> surface;
+    std::deque<ReferenceImage> images;
+    std::vector<Counterfactual> counterfactuals;
+    std::map<std::string, double> parameters;   // scalar case parameters, to name constants
+  };
+
+  Evidence surface_evidence(const Case& c, const Mesh& mesh) const {
+    Evidence evidence;
+    if (auto surface = render_surface_samples(mesh, scene_, c)) evidence.surface = std::move(*surface);
+    for (const auto& [name, values] : c.params)
+      if (values.size() == 1) evidence.parameters[name] = values.front();
+    return evidence;
+  }
+
+  // A stored image has no counterfactuals: the surface and the image-space fits only.
+  const Evidence& stored_evidence(const Case& c, const Mesh& mesh) {
+    if (!stored_evidence_) stored_evidence_ = surface_evidence(c, mesh);
+    return *stored_evidence_;
+  }
+
+  static void explain_cell(const Image& image, const ReferenceImage& reference, const std::vector<PixelClass>& classes,
+                           const Evidence& evidence, CellResult& r) {
+    const ComparisonThresholds t{r.interior_threshold, r.silhouette_threshold, r.interior_threshold_rel,
+                                 r.silhouette_threshold_rel};
+    const ConventionEvidence fit_evidence{evidence.surface ? &*evidence.surface : nullptr, evidence.counterfactuals,
+                                          evidence.parameters};
+    for (const ConventionFit& fit : explain_difference(image, reference, classes, t, fit_evidence)) {
+      // Only the best of a family (the four half-pixel directions), and only fits over pixels.
+      const bool seen = std::ranges::any_of(r.explanations, [&](const Explanation& e) { return e.name == fit.name; });
+      if (!seen && fit.pixels > 0)
+        r.explanations.push_back({fit.name, fit.description, fit.residual, fit.rmse, fit.pixels, fit.fits, describe(fit)});
+    }
+    if (!r.explanations.empty()) return;
+    // Coverage alone failed (a blank or misplaced render), which no colour fit explains: a
+    // counterfactual that draws the same pixels does.
+    for (const Counterfactual& cf : evidence.counterfactuals) {
+      const bool both_blank = std::ranges::none_of(image.coverage, [](uint8_t v) { return v != 0; }) &&
+                              std::ranges::none_of(cf.image->coverage, [](uint8_t v) { return v != 0; });
+      if (both_blank || compare_images(image, *cf.image, t).pass)
+        r.explanations.push_back({cf.name, "re-rendered with " + cf.detail, 0, 0, 0, true,
+                                  "matches the reference re-rendered with " + cf.detail +
+                                      (both_blank ? " (both draw nothing)" : " (coverage and colours)")});
+    }
+    if (r.explanations.empty() && r.attribution == "matrix convention")
+      r.explanations.push_back({"matrix_convention", "coverage", 0, 0, 0, true,
+                                "the coverage points at the row/column matrix convention: " + r.attribution_reason});
+  }
+
+  static ReferenceImage as_reference(const Image& image) {
+    return {image.width, image.height, std::vector<double>(image.rgba.begin(), image.rgba.end()), image.coverage};
+  }
+
+  // The case's bindings for `language` with every matrix in the other row/column
+  // convention, or nothing when it binds no matrix.
+  std::optional<BindingTable> transposed_matrices(const Case& c, Language language) const {
+    const auto table = c.bindings.find(language);
+    if (table == c.bindings.end()) return std::nullopt;
+    const NamedValues values = bindable_values(scene_, c);
+    BindingTable flipped = table->second;
+    bool any = false;
+    for (auto& [name, binding] : flipped) {
+      const auto value = values.find(binding.single_name());
+      if (value == values.end() || (value->second.size() != 16 && value->second.size() != 9)) continue;
+      binding.layout = binding.layout == MatrixLayout::row_vector ? MatrixLayout::column_vector : MatrixLayout::row_vector;
+      any = true;
+    }
+    if (!any) return std::nullopt;
+    return flipped;
+  }
 
   // A cell's row before it is drawn: its identity, thresholds and reference.
   static CellResult row(const CellGroup& g, const PlannedCell& cell, const Thresholds& t, const ReferenceSource& source) {
@@ -257,8 +399,7 @@ class GroupRunner {
     if (!image)
       return std::unexpected(Error{.message = "the original (" + label + ") could not be drawn: " + image.error().to_string(),
                                    .file = c.path, .line = c.reference_render->line, .stage = "reference"});
-    ReferenceImage reference{image->width, image->height, std::vector<double>(image->rgba.begin(), image->rgba.end()),
-                             image->coverage};
+    ReferenceImage reference = as_reference(*image);
     const Comparison itself = compare_images(*image, reference, {}, area_);
     if (itself.degenerate || itself.blank || itself.interior.pixels == 0)
       return std::unexpected(Error{.message = "the original (" + label + ") is no reference: " + itself.reason,
@@ -295,7 +436,7 @@ class GroupRunner {
       const double spread = renders_max_difference(failing, classes_);
       if (whole_languages && failing.size() > 1 && spread <= t.interior)
         port_reason = fmt::format("all {} failing renders agree with each other (max difference {:.3g}) and differ from "
-                                  "the original ({}): the port's source computes something else",
+                                  "the original, {}: the port's source computes something else",
                                   failing.size(), spread, results.front().reference.label);
     }
     for (size_t i = 0; i < rendered.size() && i < verdicts.size(); ++i) {
@@ -344,7 +485,9 @@ class GroupRunner {
 
   // Compiles, binds and draws one cell of `variant`; fills r's compile and draw parts.
   Result<Image> draw_cell(const Case& c, const Variant& variant, const PlannedCell& cell, const Mesh& mesh,
-                          const Result<const Texture*>& lut, const TimingRequest& timing, CellResult& r) {
+                          const Result<const Texture*>& lut, const TimingRequest& timing, CellResult& r,
+                          const Variation& variation = {}) {
+    const SceneSetup& scene = variation.scene ? *variation.scene : scene_;
     const CachedProgram& compiled = caches_.programs.get(c, variant, cell.language);
     if (!compiled.program) return std::unexpected(compiled.program.error());
     r.time_ms["compile"] = compiled.ms;
@@ -357,15 +500,18 @@ class GroupRunner {
 
     auto bindings = c.bindings.find(cell.language);
     static const BindingTable no_bindings;
-    const BindingTable& table = bindings == c.bindings.end() ? no_bindings : bindings->second;
-    CaseUniforms uniforms(table, bindable_values(scene_, c), c.path);
+    const BindingTable& table = variation.bindings              ? *variation.bindings
+                                : bindings == c.bindings.end() ? no_bindings
+                                                               : bindings->second;
+    CaseUniforms uniforms(table, bindable_values(scene, c), c.path);
     if (auto bound = uniforms.check_all_bound(*compiled.program); !bound) return std::unexpected(bound.error());
     CaseTextures textures(table, c.textures.for_language(cell.language), *lut, c.path,
                           &compiled.program->sampler_settings);
     if (auto ok = textures.check(*compiled.program); !ok) return std::unexpected(ok.error());
+    if (variation.flip_images && !textures.flip_images_vertically()) return fail("counterfactual", "no image to flip");
     // A model reads no texture; a render of the original reads the same ones.
     if (!c.differential()) r.reference_note = textures.reference_note();
-    DrawJob job{*compiled.program, cell.path, mesh, uniforms, scene_.width, scene_.height, &textures, timing};
+    DrawJob job{*compiled.program, cell.path, mesh, uniforms, scene.width, scene.height, &textures, timing};
     job.render_state = compiled.program->render_state;  // a DX9 effect pass's states
     const auto attributes = c.attributes.find(cell.language);
     if (attributes != c.attributes.end()) job.attributes = &attributes->second;
@@ -449,6 +595,7 @@ class GroupRunner {
   Caches& caches_;
   double area_ = 0;   // the current group's expected projected area, in pixels
   std::vector<PixelClass> classes_;   // the current group's reference, classified once for all its cells
+  std::optional<Evidence> stored_evidence_;   // the current group's, against stored images
 };
 
 // Consecutive groups of one case x variant: they share programs, so one worker runs

@@ -41,7 +41,10 @@ glm::dmat4 projection_matrix(const Camera& c, double aspect) {
 NamedValues scene_quantities(const SceneSetup& s) {
   const double aspect = double(s.width) / s.height;
   const glm::dmat4 view = view_matrix(s.camera);
-  const glm::dmat4 projection = projection_matrix(s.camera, aspect);
+  // A clip-space shift (NDC units, times w) moves the whole image: D3D9's half-pixel offset.
+  glm::dmat4 shift(1.0);
+  shift[3] = glm::dvec4(s.clip_offset, 0.0, 1.0);
+  const glm::dmat4 projection = shift * projection_matrix(s.camera, aspect);
   const glm::dmat4 world_view = view * s.world;
   NamedValues out;
   add_matrix(out, "world", s.world);

@@ -31,6 +31,9 @@ struct SceneSetup {
   Camera camera;
   Lights lights;
   glm::dmat4 world{1.0};
+  // Added to clip x, y (times w) in the bindable projections: (1/width, -1/height) is
+  // D3D9's half-pixel offset. Zero except when the runner re-draws a counterfactual.
+  glm::dvec2 clip_offset{0.0};
   int width = 256;
   int height = 256;
 };

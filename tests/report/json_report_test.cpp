@@ -61,7 +61,17 @@ RunReport every_field() {
   r.vertex_spirv_hash = "00112233aabbccdd";
   r.fragment_spirv_hash = "ffeeddccbbaa9988";
   r.artefacts = {"a.exr", "a.png", "a.error.exr", "a.error.png", "reference.png",
-                 "v.spvasm", "f.spvasm", "v.cross.glsl", "f.cross.glsl"};
+                 "v.spvasm", "f.spvasm", "v.cross.glsl", "f.cross.glsl", "stored/a.exr"};
+  // A differential cell's fields: the tolerance's relative part and reason, the
+  // reference it was judged against, the convention fits, the scene hash.
+  m.tolerance_share = 4.5e3;
+  r.interior_threshold_rel = 0x1p-13;
+  r.silhouette_threshold_rel = 0x1p-10;
+  r.tolerance_reason = "differential default";
+  r.reference = {"images", "images in /tmp/good", false, "glslang 11 (stored) vs 12"};
+  r.explanations = {{"constant_factor", "× π", 2e-6, 1e-6, 900, true, "matches the reference × π to 2e-6"},
+                    {"gamma_encoded_render", "encoded", 0.25, 0.125, 900, false, "encoded fits only to 0.25"}};
+  r.scene_hash = "52445d0d43dbdc6d";
   report.results.push_back(r);
   CellResult e;
   e.case_name = "lambert";
@@ -90,7 +100,9 @@ TEST(JsonReport, WritesSchemaVersionToolchainAndEveryCellField) {
         "\"min_passing\"", "\"expected_area\": 1201.25", "\"reference_covered_pixels\": 1200", "\"above_one\": 10",
         "\"vertex\": \"00112233aabbccdd\"", "\"fragment_cross_glsl\": \"f.cross.glsl\"", "\"bound\": 0.00035",
         "\"derivation\": \"256 entries", "\"readback\": 0.0625", "\"id\": \"phong/pixel_lut/hlsl/gl/cross/torus\"",
-        "\"known\": 1", "\"error\": 1"})
+        "\"known\": 1", "\"error\": 1", "\"interior_rel\": 0.0001220703125", "\"toolchain_note\": \"glslang 11",
+        "\"name\": \"constant_factor\"", "\"summary\": \"matches the reference × π to 2e-6\"", "\"fits\": false",
+        "\"scene_hash\": \"52445d0d43dbdc6d\"", "\"stored_exr\": \"stored/a.exr\"", "\"tolerance_share\": 4500.0"})
     EXPECT_NE(text.find(needle), std::string::npos) << needle << "\n" << text;
   EXPECT_EQ(std::string(R"("schema")"), text.substr(text.find('"'), 8)) << "the version comes first";
 }
@@ -129,6 +141,15 @@ TEST(JsonReport, RoundTripIsExact) {
   EXPECT_EQ(r.gpu.runs, 5);
   EXPECT_EQ(r.gpu.wall.high, 1.5);
   EXPECT_EQ(r.gpu.device.level, 0.9375);
+  EXPECT_EQ(r.reference.kind, "images");
+  EXPECT_EQ(r.reference.toolchain_note, "glslang 11 (stored) vs 12");
+  ASSERT_EQ(r.explanations.size(), 2u);
+  EXPECT_EQ(r.explanations[0].residual, 2e-6);
+  EXPECT_TRUE(r.explanations[0].fits);
+  EXPECT_EQ(r.explanations[1].pixels, 900u);
+  EXPECT_EQ(r.interior_threshold_rel, 0x1p-13);
+  EXPECT_EQ(r.tolerance_reason, "differential default");
+  EXPECT_EQ(r.metrics.tolerance_share, 4.5e3);
   EXPECT_EQ(back->results[1].status, "error");
   EXPECT_FALSE(back->acceptable());
   fs::remove_all(file.parent_path().parent_path());

@@ -97,6 +97,74 @@ TEST(Differential, PortsWithAPlantedConventionFailAndBlameThePort) {
   EXPECT_NE(out.find("judged against: the original, hlsl vulkan/spirv"), std::string::npos) << out;
 }
 
+// Each planted convention, on the sphere and every backend and path: the cell fails and
+// the convention it plants is the first explanation, and it fits. The residuals are
+// printed for the record (the closing note quotes them).
+TEST(Differential, EachPlantedConventionIsNamedFirst) {
+  const std::pair<const char*, std::map<std::string, std::string>> corpus[] = {
+      {"tinted_diffuse",
+       {{"factor_pi", "constant_factor"},
+        {"extra_n_dot_l", "extra_n_dot_l"},
+        {"light_negated", "negated_light"},
+        {"unnormalised_normal", "unnormalised_normal"},
+        {"gamma", "gamma_encoded_render"},
+        {"half_pixel", "half_pixel_offset_redrawn"},
+        {"transposed_matrix", "transposed_matrices"}}},
+      {"glossy", {{"ungated_specular", "not_gated_by_n_dot_l"}, {"clamped", "render_clamps"}}},
+      {"textured", {{"flipped_v", "flipped_texture_v"}}},
+  };
+  shaderbed::test::TempDir dir("planted");
+  for (const auto& [name, planted] : corpus) {
+    std::string variants;
+    for (const auto& [variant, convention] : planted) variants += (variants.empty() ? "" : ",") + variant;
+    const std::string results = dir / (std::string(name) + ".json");
+    const auto [status, out] = shaderbed_cli("run --case " + (kCorpus / "cases" / (std::string(name) + ".toml")).string() +
+                                             " --variant " + variants + " --shape sphere --size 64 --repeat 0 -q --json " +
+                                             results);
+    EXPECT_EQ(status, 1) << out;
+    const json j = read_json(results);
+    ASSERT_EQ(j["results"].size(), 4 * planted.size()) << out;
+    for (const json& r : j["results"]) {
+      const std::string variant = r["variant"];
+      EXPECT_EQ(r["status"], "fail") << r["id"];
+      ASSERT_FALSE(r["explanations"].empty()) << r["id"] << ": " << r["message"];
+      const json& best = r["explanations"][0];
+      EXPECT_EQ(best["name"], planted.at(variant)) << r["id"] << ": " << best["summary"];
+      EXPECT_TRUE(best["fits"].get<bool>()) << r["id"] << ": " << best["summary"];
+      if (r["backend"] == "vulkan")
+        std::printf("%-32s %-28s residual %.2g  (%s)\n", (std::string(name) + "/" + variant).c_str(),
+                    best["name"].get<std::string>().c_str(), best["residual"].get<double>(),
+                    best["summary"].get<std::string>().c_str());
+    }
+    // The console names it too.
+    EXPECT_NE(out.find("      explained: matches the reference"), std::string::npos) << out;
+  }
+}
+
+// Against a model, the reference re-rendered under each convention does the same.
+TEST(Differential, ModelCasesNameTheConventionToo) {
+  shaderbed::test::TempDir dir("planted_model");
+  const std::string results = dir / "mutants.json";
+  const auto [status, out] = shaderbed_cli(
+      "run --cases-dir " + (fs::path(SHADERBED_SOURCE_DIR) / "tests" / "mutants" / "cases").string() +
+      " --case phong_reflect_sign,lambert_no_normalize,lambert_unclamped --shape sphere --backend vulkan --size 64 "
+      "--repeat 0 -q --json " + results);
+  EXPECT_EQ(status, 1) << out;
+  const std::map<std::string, std::string> expected{{"phong_reflect_sign", "negated_eye"},
+                                                    {"lambert_no_normalize", "unnormalised_normal"},
+                                                    {"lambert_unclamped", "not_gated_by_n_dot_l"}};
+  int failing = 0;
+  const json j1 = read_json(results);
+  for (const json& r : j1["results"]) {
+    if (r["status"] != "fail") continue;
+    ++failing;
+    ASSERT_FALSE(r["explanations"].empty()) << r["id"];
+    EXPECT_EQ(r["explanations"][0]["name"], expected.at(r["case"])) << r["id"] << ": " << r["explanations"][0]["summary"];
+    EXPECT_TRUE(r["explanations"][0]["fits"].get<bool>()) << r["id"];
+  }
+  EXPECT_GE(failing, 3);
+}
+
 TEST(Differential, TheReferenceIsDrawnEvenWhenItsBackendIsFilteredOut) {
   const auto [status, out] = shaderbed_cli("run --case " + (kCorpus / "cases" / "glossy.toml").string() +
                                            " --variant port --backend gl --shape torus --size 48 --repeat 0 -q");
@@ -134,7 +202,8 @@ TEST(Differential, StoredImagesPassOnARerunAndFailAfterAOneLineChange) {
   {
     const auto [status, out] = shaderbed_cli("run --case " + the_case + common + " --against " + stored + " --json " + results);
     EXPECT_EQ(status, 1) << out;
-    for (const json& r : read_json(results)["results"]) EXPECT_EQ(r["status"], "fail") << r["id"];
+    const json j2 = read_json(results);
+    for (const json& r : j2["results"]) EXPECT_EQ(r["status"], "fail") << r["id"];
   }
   // A case may name the stored run as its reference; a different toolchain is reported beside the verdict.
   const fs::path manifest = fs::path(stored) / "manifest.json";
@@ -147,7 +216,8 @@ TEST(Differential, StoredImagesPassOnARerunAndFailAfterAOneLineChange) {
   {
     const auto [status, out] = shaderbed_cli("run --case " + the_case + common + " --json " + results);
     EXPECT_EQ(status, 0) << out;
-    for (const json& r : read_json(results)["results"]) {
+    const json j3 = read_json(results);
+    for (const json& r : j3["results"]) {
       EXPECT_EQ(r["status"], "pass") << r["id"];
       EXPECT_NE(r["reference"]["toolchain_note"].get<std::string>().find("glslang 0.0-stored-"), std::string::npos);
     }

@@ -1,0 +1,191 @@
+// render_surface() and render() under a Perturbation: the surface covers exactly the
+// pixels render() shades, its N·L reproduces lambert, and each perturbation changes the
+// image the way its convention says (and only that way).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "reference/Reference.h"
+#include "reference/Surface.h"
+
+namespace reference {
+namespace {
+
+// A UV sphere of radius 1 with unit vertex normals; at low tessellation the interpolated
+// normal inside a triangle is visibly shorter than 1.
+Mesh sphere(int slices, int stacks) {
+  Mesh mesh;
+  for (int j = 0; j <= stacks; ++j) {
+    const double theta = std::numbers::pi * j / stacks;
+    for (int i = 0; i <= slices; ++i) {
+      const double phi = 2 * std::numbers::pi * i / slices;
+      const glm::dvec3 p(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
+      mesh.vertices.push_back({p, p, {-std::sin(phi), 0, std::cos(phi)}, {double(i) / slices, double(j) / stacks}});
+    }
+  }
+  for (int j = 0; j < stacks; ++j) {
+    for (int i = 0; i < slices; ++i) {
+      const auto a = static_cast<uint32_t>(j * (slices + 1) + i), b = a + 1, c = a + slices + 1, d = c + 1;
+      for (uint32_t index : {a, b, c, b, d, c}) mesh.indices.push_back(index);
+    }
+  }
+  return mesh;
+}
+
+// The sphere seen from the side, lit from the upper left so both the lit and the unlit
+// side are in view.
+Scene sphere_scene(int slices, int stacks) {
+  Scene scene;
+  scene.mesh = sphere(slices, stacks);
+  scene.width = 96;
+  scene.height = 96;
+  scene.camera.eye = {0, 0, -5};
+  scene.camera.target = {0, 0, 0};
+  scene.lights.direction = glm::normalize(glm::dvec3(-1, 1, 0.3));
+  scene.lights.position = {-3, 2, -2};
+  return scene;
+}
+
+const glm::dvec3 diffuse{0.9, 0.6, 0.3};
+const Params lambert{{"diffuse", {0.9, 0.6, 0.3}}};
+const Params phong{{"diffuse", {0.9, 0.6, 0.3}}, {"specular", {1, 1, 1}}, {"power", {7}}};
+
+Framebuffer rendered(const Scene& scene, const std::string& model, const Params& params,
+                     const Perturbation& perturbation = {}, Mode mode = Mode::per_pixel) {
+  auto image = render(scene, model, mode, params, perturbation);
+  EXPECT_TRUE(image) << image.error();
+  return image ? *image : Framebuffer{};
+}
+
+SurfaceBuffer surface_of(const Scene& scene) {
+  auto surface = render_surface(scene);
+  EXPECT_TRUE(surface) << surface.error();
+  return surface ? *surface : SurfaceBuffer{};
+}
+
+// Calls expected(sample) at every covered pixel and compares the image's RGB with it.
+template <typename Expected>
+void expect_pixels(const Framebuffer& image, const SurfaceBuffer& surface, Expected expected,
+                   double tolerance = 1e-12) {
+  ASSERT_EQ(image.coverage, surface.coverage);
+  size_t covered = 0;
+  for (size_t pixel = 0; pixel < surface.samples.size(); ++pixel) {
+    if (!surface.coverage[pixel]) continue;
+    ++covered;
+    const glm::dvec3 colour = expected(surface.samples[pixel]);
+    for (int c = 0; c < 3; ++c) ASSERT_NEAR(image.rgba[pixel * 4 + c], colour[c], tolerance) << "pixel " << pixel;
+  }
+  EXPECT_GT(covered, 1000u);
+}
+
+double n_dot_l(const SurfaceSample& sample) { return glm::dot(glm::normalize(sample.normal), sample.to_light); }
+
+TEST(Surface, CoversExactlyThePixelsRenderShades) {
+  for (const Scene& scene : {sphere_scene(8, 6), sphere_scene(64, 32)}) {
+    const SurfaceBuffer surface = surface_of(scene);
+    const Framebuffer image = rendered(scene, "lambert", lambert);
+    EXPECT_EQ(surface.width, image.width);
+    EXPECT_EQ(surface.height, image.height);
+    EXPECT_EQ(surface.coverage, image.coverage);
+  }
+}
+
+TEST(Surface, ErrorsAreRendersErrors) {
+  Scene scene = sphere_scene(8, 6);
+  scene.mesh.indices.push_back(0);
+  const auto surface = render_surface(scene);
+  ASSERT_FALSE(surface);
+  EXPECT_NE(surface.error().find("multiple of 3"), std::string::npos);
+}
+
+TEST(Surface, UnitVectorsAndNormalLengthBelowOneOnACoarseSphere) {
+  const SurfaceBuffer surface = surface_of(sphere_scene(8, 6));
+  double shortest = 1;
+  for (size_t pixel = 0; pixel < surface.samples.size(); ++pixel) {
+    if (!surface.coverage[pixel]) continue;
+    const SurfaceSample& sample = surface.samples[pixel];
+    EXPECT_NEAR(glm::length(sample.to_light), 1.0, 1e-12);
+    EXPECT_NEAR(glm::length(sample.to_eye), 1.0, 1e-12);
+    EXPECT_NEAR(glm::length(sample.position), 1.0, 0.15);  // on the coarse sphere: its chords dip to ~0.9
+    EXPECT_LE(glm::length(sample.normal), 1.0 + 1e-12);
+    shortest = std::min(shortest, glm::length(sample.normal));
+  }
+  EXPECT_LT(shortest, 0.95);
+}
+
+TEST(Surface, NDotLReproducesLambertPixelByPixel) {
+  for (SceneLight light : {SceneLight::model_default, SceneLight::point}) {
+    Scene scene = sphere_scene(16, 12);
+    scene.light = light;
+    expect_pixels(rendered(scene, "lambert", lambert), surface_of(scene),
+                  [](const SurfaceSample& s) { return diffuse * std::max(0.0, n_dot_l(s)); });
+  }
+}
+
+TEST(Perturbation, NoneIsRendersOwnImage) {
+  const Scene scene = sphere_scene(16, 12);
+  const auto plain = render(scene, "phong", Mode::per_pixel, phong);
+  ASSERT_TRUE(plain);
+  const Framebuffer unperturbed = rendered(scene, "phong", phong, Perturbation{});
+  EXPECT_EQ(plain->rgba, unperturbed.rgba);
+  EXPECT_EQ(plain->coverage, unperturbed.coverage);
+}
+
+TEST(Perturbation, NegatedLightLightsTheOtherSide) {
+  for (SceneLight light : {SceneLight::model_default, SceneLight::point}) {
+    Scene scene = sphere_scene(16, 12);
+    scene.light = light;
+    expect_pixels(rendered(scene, "lambert", lambert, {.negate_light = true}), surface_of(scene),
+                  [](const SurfaceSample& s) { return diffuse * std::max(0.0, -n_dot_l(s)); });
+  }
+}
+
+// point_attenuated: the light reflected through P keeps its distance, so only the cosine
+// changes sign: diffuse sat(-N·Lp) / (0.04 d).
+TEST(Perturbation, NegatedPointLightKeepsItsDistance) {
+  Scene scene = sphere_scene(16, 12);
+  scene.light = SceneLight::point;  // the L render_surface reports for a point-light model
+  const Params params{{"diffuse", {0.9, 0.6, 0.3}}, {"light_color", {1, 1, 1}}, {"attenuation", {0, 0.04, 0}}};
+  expect_pixels(rendered(scene, "point_attenuated", params, {.negate_light = true}), surface_of(scene),
+                [&](const SurfaceSample& s) {
+                  const double distance = glm::length(glm::dvec3(-3, 2, -2) - s.position);
+                  return diffuse * std::max(0.0, -n_dot_l(s)) / (0.04 * distance);
+                });
+}
+
+TEST(Perturbation, UnnormalisedNormalScalesLambertByTheNormalsLength) {
+  const Scene scene = sphere_scene(8, 6);
+  expect_pixels(rendered(scene, "lambert", lambert, {.unnormalised_normal = true}), surface_of(scene),
+                [](const SurfaceSample& s) { return diffuse * std::max(0.0, glm::dot(s.normal, s.to_light)); });
+  // And it does change the image (|n| < 1 inside the triangles), unlike per vertex.
+  EXPECT_NE(rendered(scene, "lambert", lambert, {.unnormalised_normal = true}).rgba,
+            rendered(scene, "lambert", lambert).rgba);
+  EXPECT_EQ(rendered(scene, "lambert", lambert, {.unnormalised_normal = true}, Mode::per_vertex).rgba,
+            rendered(scene, "lambert", lambert, {}, Mode::per_vertex).rgba);
+}
+
+TEST(Perturbation, NegatedEyeChangesPhongButNotLambert) {
+  const Scene scene = sphere_scene(16, 12);
+  EXPECT_EQ(rendered(scene, "lambert", lambert, {.negate_eye = true}).rgba, rendered(scene, "lambert", lambert).rgba);
+  const Framebuffer plain = rendered(scene, "phong", phong);
+  const Framebuffer negated = rendered(scene, "phong", phong, {.negate_eye = true});
+  EXPECT_NE(plain.rgba, negated.rgba);
+  // The specular lobe follows R·(-V): the phong render minus its diffuse part.
+  const SurfaceBuffer surface = surface_of(scene);
+  expect_pixels(negated, surface, [](const SurfaceSample& s) {
+    const glm::dvec3 n = glm::normalize(s.normal);
+    const glm::dvec3 r = glm::normalize(2.0 * n * glm::dot(n, s.to_light) - s.to_light);
+    return diffuse * std::max(0.0, n_dot_l(s)) + glm::dvec3(std::pow(std::max(0.0, glm::dot(r, -s.to_eye)), 7.0));
+  }, 1e-9);
+}
+
+TEST(Perturbation, NegatedLightAlsoAppliesPerVertex) {
+  const Scene scene = sphere_scene(16, 12);
+  EXPECT_NE(rendered(scene, "lambert", lambert, {.negate_light = true}, Mode::per_vertex).rgba,
+            rendered(scene, "lambert", lambert, {}, Mode::per_vertex).rgba);
+}
+
+}  // namespace
+}  // namespace reference
