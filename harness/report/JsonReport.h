@@ -20,23 +20,29 @@ namespace shaderbed {
 //    "status": "pass" | "fail" | "error", "message": "...",
 //    "attribution": {"verdict": "driver" | ... | "", "reason": "..."},
 //    "known_failure": {"known": bool, "reason": "..."},
+//    "reference": {"kind": "model" | "render" | "images", "label", "is_reference": bool,
+//                  "toolchain_note"},              (what the cell was judged against)
+//    "explanations": [{"name", "description", "summary", "residual", "rmse", "pixels",
+//                      "fits": bool}],              (convention fits of a failure, fitting first)
 //    "metrics": {"max_abs", "rmse", "psnr", "bad_pixels", "nonfinite", "nonfinite_mismatch",
 //                "coverage_mismatch", "silhouette_max_abs",
-//                "min_passing": {"interior", "silhouette"},
+//                "min_passing": {"interior", "silhouette"}, "tolerance_share",
 //                "coverage": {"interior_pixels", "silhouette_pixels", "covered_pixels",
 //                             "reference_covered_pixels", "expected_area"},
 //                "values": {"render": {"nan", "pos_inf", "neg_inf", "negative", "above_one"},
 //                           "reference": {...same...}}},
-//    "tolerance": {"interior", "silhouette", "lut": {"bound", "derivation"}},
+//    "tolerance": {"interior", "silhouette", "interior_rel", "silhouette_rel", "reason",
+//                  "lut": {"bound", "derivation"}},   (a channel passes within abs + rel |reference|)
 //    "time_ms": {"compile": ..., "build": ..., ...},      (CPU wall times; build 0 when cached)
 //    "program_cached": bool,                   (the backend reused an earlier cell's pipeline)
 //    "gpu_ms": {"clock": "timestamp queries" | "GL_TIME_ELAPSED" | "", "warmup", "runs",
 //               "device": {"median", "ci": {"low", "high", "level"}},   (driver's clock)
 //               "wall": {...same...}},                                  (CPU clock per repeat)
-//    "spirv_hash": {"vertex", "fragment"},
+//    "spirv_hash": {"vertex", "fragment"}, "scene_hash": "...",
 //    "instructions": {"vertex", "fragment"},   (SPIR-V function-body instructions as drawn)
 //    "artefacts": {"render_exr", "render_png", "error_exr", "error_png", "reference_png",
-//                  "vertex_spirv", "fragment_spirv", "vertex_cross_glsl", "fragment_cross_glsl"},
+//                  "stored_exr", "vertex_spirv", "fragment_spirv", "vertex_cross_glsl",
+//                  "fragment_cross_glsl"},
 //    "image": render_exr                      (v1 alias, only when set; ignored on read)
 //  }]}
 //
