@@ -26,6 +26,10 @@ enum class ShaderPath {
 };
 const char* to_string(ShaderPath);
 
+// The paths a backend ("vulkan", "gl") offers for programs of a language, known without
+// starting it (a run is planned before, or without, its drivers starting).
+std::vector<ShaderPath> backend_paths(const std::string& backend, Language language);
+
 // How a texture's texels are stored on the device. Every format is read as float RGBA
 // by the shader; the 8-bit ones are unsigned normalised, sRGB decoded to linear.
 enum class TexelFormat { r32_float, rgba32_float, rgba8_unorm, rgba8_srgb };
@@ -127,6 +131,7 @@ Result<std::unique_ptr<Backend>> make_vulkan_backend();
 // --vulkan-device: the device every later make_vulkan_backend() opens, by index or name
 // (vulkan::VulkanDevice::create); "" = lavapipe. Set before any backend starts.
 void choose_vulkan_device(std::string index_or_name);
+const std::string& chosen_vulkan_device();
 Result<std::unique_ptr<Backend>> make_gl_backend();
 
 }  // namespace shaderbed

@@ -11,4 +11,10 @@ const char* to_string(ShaderPath p) {
   return "?";
 }
 
+std::vector<ShaderPath> backend_paths(const std::string& backend, Language language) {
+  if (backend != "gl") return {ShaderPath::spirv};
+  if (language == Language::glsl) return {ShaderPath::native_glsl, ShaderPath::spirv, ShaderPath::cross_glsl};
+  return {ShaderPath::spirv, ShaderPath::cross_glsl};
+}
+
 }  // namespace shaderbed

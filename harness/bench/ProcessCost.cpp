@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "core/ThisExecutable.h"
 #include "core/ChildProcess.h"
 #include "core/ScratchDirectory.h"
 #include "report/JsonReport.h"
@@ -18,9 +19,8 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string self_binary() {
-  std::error_code ec;
-  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
-  return ec ? std::string("shaderbed") : self.string();
+  const fs::path self = this_executable();
+  return self.empty() ? std::string("shaderbed") : self.string();
 }
 
 // Ours, with the cache folder replaced (SHADERBED_CACHE_DIR and Mesa's own variables, so

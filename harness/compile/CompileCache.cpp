@@ -54,6 +54,11 @@ CompileCacheCounts operator-(const CompileCacheCounts& a, const CompileCacheCoun
           a.compiles - b.compiles};
 }
 
+CompileCacheCounts operator+(const CompileCacheCounts& a, const CompileCacheCounts& b) {
+  return {a.memory_hits + b.memory_hits, a.disk_hits + b.disk_hits, a.disk_misses + b.disk_misses,
+          a.compiles + b.compiles};
+}
+
 CompileCacheCounts compile_cache_counts() {
   const ProcessCounts& c = process_counts();
   return {c.memory_hits.load(), c.disk_hits.load(), c.disk_misses.load(), c.compiles.load()};

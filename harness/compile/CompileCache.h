@@ -47,6 +47,7 @@ struct CompileCacheCounts {
   size_t misses() const { return compiles; }
 };
 CompileCacheCounts operator-(const CompileCacheCounts& a, const CompileCacheCounts& b);
+CompileCacheCounts operator+(const CompileCacheCounts& a, const CompileCacheCounts& b);   // two processes' counts
 
 // The process's counts, every cache instance and layer together (what run reports).
 CompileCacheCounts compile_cache_counts();

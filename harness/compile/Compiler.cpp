@@ -4,6 +4,7 @@
 #include <map>
 #include <sstream>
 
+#include "core/BoundedFile.h"
 #include "compile/EffectFrontEnd.h"
 #include "compile/GlslDialect.h"
 #include "compile/GlslangFrontEnd.h"
@@ -25,11 +26,9 @@ const char* to_string(Language l) {
 const char* to_string(Stage s) { return s == Stage::vertex ? "vertex" : "fragment"; }
 
 Result<ShaderSource> load_shader_source(Stage stage, const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::unexpected(Error{.message = "cannot read shader file", .file = path, .stage = "compile"});
-  std::ostringstream text;
-  text << in.rdbuf();
-  return ShaderSource{.stage = stage, .path = path, .text = text.str()};
+  auto text = read_bounded_file(path, "shader file", "compile");
+  if (!text) return std::unexpected(text.error());
+  return ShaderSource{.stage = stage, .path = path, .text = std::move(*text)};
 }
 
 Result<ShaderModule> compile_stage(Language language, const ShaderSource& source, Target target,

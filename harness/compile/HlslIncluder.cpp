@@ -1,4 +1,5 @@
 #include "compile/HlslIncluder.h"
+#include "core/BoundedFile.h"
 
 #include <filesystem>
 #include <fstream>
@@ -16,12 +17,11 @@ glslang::TShader::Includer::IncludeResult* HlslIncluder::includeLocal(const char
     const std::string& empty = texts_.emplace_back();
     return new IncludeResult(name, empty.data(), 0, nullptr);
   }
-  std::ifstream in(name, std::ios::binary);
-  if (!in)
-    return failure("cannot read '" + name + "' (#include \"" + header + "\" is resolved relative to the including file)");
-  std::ostringstream text;
-  text << in.rdbuf();
-  read_.push_back({name, text.str()});
+  auto text = read_bounded_file(name, "#include \"" + std::string(header) + "\"", "compile");
+  if (!text)
+    return failure("cannot read '" + name + "': " + text.error().message +
+                   " (#include \"" + header + "\" is resolved relative to the including file)");
+  read_.push_back({name, std::move(*text)});
   auto prepared = prepare(read_.back().text, name, includer);
   if (!prepared) return failure(prepared.error().message);
   if (prepared->pragma_once) once_.insert(name);

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <mutex>
 
+#include "core/ThisExecutable.h"
 #include "imageio/ModuleAbi.h"
 
 namespace shaderbed {
@@ -23,9 +24,7 @@ struct LoadedModule {
 // Next to the running binary first (an installed or copied tree), else where the build put it.
 std::vector<fs::path> module_candidates() {
   std::vector<fs::path> candidates;
-  std::error_code ec;
-  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec) candidates.push_back(self.parent_path() / kModuleName);
+  if (const fs::path self = this_executable(); !self.empty()) candidates.push_back(self.parent_path() / kModuleName);
   candidates.push_back(SHADERBED_IMAGEIO_MODULE);
   return candidates;
 }
@@ -66,10 +65,22 @@ Result<void> write_image_file(const std::string& path, int width, int height, in
   if (!module.table) return std::unexpected(image_error(module.error, path));
   std::error_code ec;
   fs::create_directories(fs::path(path).parent_path(), ec);
+  // Written beside its name and renamed over it: a killed run, or two runs writing the
+  // same --out, never leave half an image (the extension stays last: it picks the format).
+  const fs::path target(path);
+  const fs::path partial =
+      target.parent_path() / (target.stem().string() + ".partial-" + std::to_string(::getpid()) + target.extension().string());
   std::array<char, 1024> error{};
-  if (module.table->write(path.c_str(), width, height, channels, type == PixelType::float32, pixels, error.data(),
-                          error.size()) != 0)
+  if (module.table->write(partial.c_str(), width, height, channels, type == PixelType::float32, pixels, error.data(),
+                          error.size()) != 0) {
+    fs::remove(partial, ec);
     return std::unexpected(image_error(error.data(), path));
+  }
+  fs::rename(partial, target, ec);
+  if (ec) {
+    fs::remove(partial, ec);
+    return std::unexpected(image_error("cannot move the image into place: " + ec.message(), path));
+  }
   return {};
 }
 

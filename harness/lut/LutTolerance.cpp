@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numbers>
 
 #include <fmt/format.h>
@@ -109,6 +110,76 @@ Result<LutErrorBound> lut_error_bound(const std::string& kind, const ModelParams
                                             min_view, band_view, lut.width)};
   }
   return fail("lut", "no error bound for LUT '" + kind + "'");
+}
+
+Result<LutErrorBound> lut_error_bound(const std::string& kind, const ModelParams& p, const Texture& lut,
+                                      const LutDomain& domain) {
+  // What the shader multiplies the LUT term by and what the term should be, at one
+  // configuration: e = weight * (|filtered - exact| + filter rounding); 0 where unlit.
+  std::function<double(const LutSample&)> error_at;
+  std::string term;
+  if (kind == "warn_power") {
+    const double alpha = param(p, "warn_exponent", 10), rows = lut.height;
+    error_at = [&lut, alpha, rows](const LutSample& x) {
+      const double u = std::clamp(x.spot_cos, 0.0, 1.0);
+      const double weight = x.light_scale * std::max(x.n_dot_l, 0.0);
+      if (weight <= 0) return 0.0;
+      const double coords[2] = {u, (alpha + 0.5) / rows};
+      return weight * (std::abs(sample_linear(lut, coords) - std::pow(u, alpha)) + filter_rounding(lut, coords));
+    };
+    term = fmt::format("D I/d^2 sat(N.Lp) |bilinear LUT - u^{}|, u = Lp.L", alpha);
+  } else if (kind == "oren_nayar_angle") {
+    const double s = param(p, "roughness_sq", 0.5), b = 0.45 * s / (s + 0.09), d = max_channel(p, "diffuse");
+    error_at = [&lut, b, d](const LutSample& x) {
+      const double weight = d * b * std::max(x.n_dot_l, 0.0) * std::clamp(x.cos_azimuth, 0.0, 1.0);
+      if (weight <= 0) return 0.0;
+      const double view = std::acos(std::clamp(x.n_dot_v, -1.0, 1.0)), light = std::acos(std::clamp(x.n_dot_l, -1.0, 1.0));
+      const double exact = std::sin(std::max(view, light)) * std::tan(std::min(view, light));
+      const double coords[2] = {0.5 * x.n_dot_v + 0.5, 0.5 * x.n_dot_l + 0.5};
+      return weight * (std::abs(sample_linear(lut, coords) - exact) + filter_rounding(lut, coords));
+    };
+    term = "D B sat(N.L) cosC |bilinear LUT - sin(a)tan(b)| at (N.V, N.L)";
+  } else if (kind == "ward_isotropic") {
+    const double sigma = param(p, "roughness", 0.25), s2 = sigma * sigma, spec = max_channel(p, "specular");
+    error_at = [&lut, s2, spec](const LutSample& x) {
+      // The shader gates the term to N.L > 0 and N.V > 0 (errata E4), as the model does.
+      if (x.n_dot_l <= 0 || x.n_dot_v <= 0) return 0.0;
+      const double z = std::clamp(x.n_dot_h, 1e-9, 1.0), tan2 = (1 - z * z) / (z * z);
+      const double exact = std::exp(-tan2 / s2) / (4 * std::numbers::pi * s2) / std::sqrt(x.n_dot_l * x.n_dot_v);
+      const double coords[3] = {x.n_dot_l, x.n_dot_v, x.n_dot_h};
+      return spec * x.n_dot_l * (std::abs(sample_linear(lut, coords) - exact) + filter_rounding(lut, coords));
+    };
+    term = "S (N.L) |trilinear LUT - ward term| at (N.L, N.V, N.H)";
+  } else {
+    return fail("lut", "no error bound for LUT '" + kind + "'");
+  }
+  // The render looks up at its own fp32 dot products, not the reference's: each within
+  // kDotError (about 100 ulp of a unit dot product: interpolation, normalize and dot),
+  // so every configuration is also tried at the corners of that box.
+  constexpr double kDotError = 1e-5;
+  const auto perturbed_max = [&](const LutSample& x) {
+    double e = error_at(x);
+    for (int corner = 0; corner < 8; ++corner) {
+      LutSample y = x;
+      y.n_dot_l += corner & 1 ? kDotError : -kDotError;
+      y.n_dot_v += corner & 2 ? kDotError : -kDotError;
+      y.n_dot_h = std::min(1.0, y.n_dot_h + (corner & 4 ? kDotError : -kDotError));
+      y.spot_cos += corner & 1 ? kDotError : -kDotError;
+      e = std::max(e, error_at(y));
+    }
+    return e;
+  };
+  double interior = 0, band = 0;
+  for (const LutSample& x : domain.interior) interior = std::max(interior, perturbed_max(x));
+  for (const LutSample& x : domain.band) band = std::max(band, error_at(x));
+  // The band's pixels may be matched at an interior neighbour: it is never tighter.
+  band = std::max(band, interior);
+  const std::string size = lut.dimensions == 3 ? fmt::format("{}^3", lut.width) : fmt::format("{}x{}", lut.width, lut.height);
+  return LutErrorBound{interior, band,
+                       fmt::format("max of {} on a {} LUT, plus filter rounding, over the {} {} interior pixels drawn "
+                                   "(each with its dot products +-1e-5, the render's fp32 error) "
+                                   "(band: {} configurations around its silhouette, extrapolated a pixel past the edge)",
+                                   term, size, domain.interior.size(), domain.shape, domain.band.size())};
 }
 
 }  // namespace shaderbed

@@ -1,6 +1,9 @@
 #include "report/ConsoleProblems.h"
 
+#include <algorithm>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -28,6 +31,23 @@ size_t known_failures(const RunReport& report) {
   size_t n = 0;
   for (const CellResult& r : report.results) n += r.status == "fail" && r.known_failure;
   return n;
+}
+
+// Passing cells too. A case's warning repeats on every backend, path and shape of its
+// language, so each distinct one is printed once per case/variant/language with a count.
+bool print_warnings(const RunReport& report, std::FILE* out, bool blank_line_first) {
+  std::vector<std::pair<std::string, size_t>> lines;   // in first-seen order
+  for (const CellResult& r : report.results)
+    for (const std::string& w : r.warnings) {
+      const std::string line = fmt::format("{} {} {}: {}", r.case_name, r.variant, r.language, w);
+      auto it = std::find_if(lines.begin(), lines.end(), [&](const auto& l) { return l.first == line; });
+      if (it == lines.end()) lines.emplace_back(line, 1);
+      else ++it->second;
+    }
+  if (lines.empty()) return false;
+  fmt::print(out, "{}warnings:\n", blank_line_first ? "\n" : "");
+  for (const auto& [line, cells] : lines) fmt::print(out, "  {} ({} cell{})\n", line, cells, cells == 1 ? "" : "s");
+  return true;
 }
 
 }  // namespace
@@ -70,14 +90,17 @@ bool print_problems(const RunReport& report, std::FILE* out, bool blank_line_fir
   section("known failures that passed (remove them from the expectations)",
           [](const CellResult& r) { return r.status == "pass" && r.known_failure; },
           [&](const CellResult& r) { fmt::print(out, "  {}: {}\n", where(r), r.known_reason); });
+  print_warnings(report, out, printed || blank_line_first) && (printed = true);
   return printed;
 }
 
 void print_totals(const RunReport& report, std::FILE* out) {
   const size_t known = known_failures(report);
   const size_t skipped = report.count("skipped");
+  if (report.interruption)
+    fmt::print(out, "INCOMPLETE: {}; the cells below are those it finished\n", report.interruption->reason);
   fmt::print(out, "{}{} cells: {} passed, {} failed, {} known, {} errors{} in {:.1f} s\n",
-             report.acceptable() ? "" : "FAIL: ", report.results.size(), report.count("pass"),
+             report.interruption ? "INCOMPLETE: " : report.acceptable() ? "" : "FAIL: ", report.results.size(), report.count("pass"),
              report.count("fail") - known, known, report.count("error"),
              skipped ? fmt::format(", {} skipped", skipped) : "", report.wall_ms / 1000.0);
 }

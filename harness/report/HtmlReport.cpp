@@ -273,6 +273,7 @@ class Writer {
       h += fmt::format("<p class=\"known\"><b>known failure</b>{}</p>",
                        r.known_reason.empty() ? "" : ": " + escape(r.known_reason));
     if (!r.reference_note.empty()) h += fmt::format("<p class=\"note\"><b>reference</b>: {}</p>", escape(r.reference_note));
+    for (const std::string& w : r.warnings) h += fmt::format("<p class=\"note\"><b>warning</b>: {}</p>", escape(w));
     const std::string against = judged_against(r);
     if (!against.empty()) h += fmt::format("<p class=\"note\"><b>judged against</b>: {}</p>", escape(against));
     if (r.reference.is_reference) h += "<p class=\"note\"><b>this render is the reference</b> of its case</p>";

@@ -40,6 +40,7 @@ ojson cell_json(const CellResult& r) {
   cell["attribution"] = {{"verdict", r.attribution}, {"reason", r.attribution_reason}};
   cell["known_failure"] = {{"known", r.known_failure}, {"reason", r.known_reason}};
   if (!r.reference_note.empty()) cell["reference_note"] = r.reference_note;
+  cell["warnings"] = r.warnings;
   cell["reference"] = {{"kind", r.reference.kind},
                        {"label", r.reference.label},
                        {"is_reference", r.reference.is_reference},
@@ -206,6 +207,14 @@ CellResult read_cell(const json& c, const std::string& p) {
     read(*k, "reason", child(p, "known_failure"), r.known_reason);
   }
   read(c, "reference_note", p, r.reference_note);
+  if (const json* list = member(c, "warnings")) {   // absent in files from before it existed
+    if (!list->is_array()) throw BadField{child(p, "warnings"), "expected an array"};
+    for (size_t i = 0; i < list->size(); ++i) {
+      if (!(*list)[i].is_string())
+        throw BadField{child(child(p, "warnings"), std::to_string(i)), "expected a string"};
+      r.warnings.push_back((*list)[i].get<std::string>());
+    }
+  }
   if (const json* s = object_at(c, "reference", p)) {
     const std::string sp = child(p, "reference");
     read(*s, "kind", sp, r.reference.kind);
@@ -339,7 +348,13 @@ RunReport read_report(const json& j) {
       read(*mesa, "gl", "/tool/mesa", report.tools.gl_driver);
     }
   }
+  read(j, "run_id", "", report.run_id);
   read(j, "shard", "", report.shard);
+  if (const json* incomplete = object_at(j, "incomplete", "")) {
+    Interruption& i = report.interruption.emplace();
+    read(*incomplete, "signal", "/incomplete", i.signal);
+    read(*incomplete, "reason", "/incomplete", i.reason);
+  }
   read(j, "out_dir", "", report.out_dir);
   read(j, "wall_ms", "", report.wall_ms);
   read(j, "workers", "", report.workers);
@@ -365,13 +380,14 @@ RunReport read_report(const json& j) {
   return report;
 }
 
-}  // namespace
-
-std::string to_json(const RunReport& report) {
+ojson report_json(const RunReport& report) {
   ojson j;
   j["schema"] = kResultsSchemaVersion;
   j["tool"] = json_tools(report.tools);
+  j["run_id"] = report.run_id;
   j["shard"] = report.shard;
+  if (report.interruption)
+    j["incomplete"] = {{"signal", report.interruption->signal}, {"reason", report.interruption->reason}};
   j["out_dir"] = report.out_dir;
   j["wall_ms"] = json_number(report.wall_ms);
   j["workers"] = report.workers;
@@ -395,8 +411,18 @@ std::string to_json(const RunReport& report) {
                  {"skipped", report.count("skipped")}};
   j["results"] = ojson::array();
   for (const CellResult& r : report.results) j["results"].push_back(cell_json(r));
+  return j;
+}
+
+}  // namespace
+
+std::string to_json(const RunReport& report) {
   // Compiler output can hold any bytes: invalid UTF-8 becomes U+FFFD instead of an exception.
-  return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
+  return report_json(report).dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+std::string to_json_line(const RunReport& report) {
+  return report_json(report).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 Result<void> write_json(const RunReport& report, const std::string& path) {

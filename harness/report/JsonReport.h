@@ -12,7 +12,8 @@ namespace shaderbed {
 //
 // {"schema": 2,
 //  "tool": {"glslang", "spirv_tools", "spirv_cross", "llvm", "mesa": {"vulkan", "gl"}},
-//  "shard": "I/N" or "", "out_dir": "...", "wall_ms": 1234.5, "workers": 2,
+//  "run_id": "...", "shard": "I/N" or "", "out_dir": "...", "wall_ms": 1234.5, "workers": 2,
+//  "incomplete": {"signal": 2, "reason": "interrupted by SIGINT after 120 of 1400 cells"},   (only when so)
 //  "totals": {"cells", "pass", "fail", "known", "error", "skipped"},        (derived; ignored on read)
 //  "results": [{
 //    "id": "case/variant/language/backend/path/shape",               (derived; ignored on read)
@@ -20,6 +21,7 @@ namespace shaderbed {
 //    "status": "pass" | "fail" | "error", "message": "...",
 //    "attribution": {"verdict": "driver" | ... | "", "reason": "..."},
 //    "known_failure": {"known": bool, "reason": "..."},
+//    "warnings": ["..."],                  (not failures: e.g. a binding the shader does not declare)
 //    "reference": {"kind": "model" | "render" | "images", "label", "is_reference": bool,
 //                  "toolchain_note"},              (what the cell was judged against)
 //    "explanations": [{"name", "description", "summary", "residual", "rmse", "pixels",
@@ -49,6 +51,8 @@ namespace shaderbed {
 // JSON has no Inf/NaN: a non-finite number is written as the string "inf", "-inf" or "nan"
 // (psnr is +inf for identical images); the reader also takes null as NaN.
 std::string to_json(const RunReport& report);
+// The same on one line (no newline in it): the message an isolated worker sends per cell.
+std::string to_json_line(const RunReport& report);
 Result<void> write_json(const RunReport& report, const std::string& path);
 
 // Reads a results file written by write_json (any shard). Errors name the file and, for

@@ -70,6 +70,7 @@ std::string details(const CellResult& r) {
 
 std::string system_out(const CellResult& r) {
   std::string out;
+  for (const std::string& w : r.warnings) out += "warning: " + w + "\n";
   for (const auto& [stage, ms] : r.time_ms)
     out += fmt::format("{} {:.3f} ms{}\n", stage, ms, shared_stage(stage) ? " (shared)" : "");
   const CellArtefacts& a = r.artefacts;

@@ -105,6 +105,9 @@ struct CellResult {
   // What the reference did not see, e.g. the image files the case binds (the reference
   // models read no texture); "" when it saw everything the draw did.
   std::string reference_note;
+  // Not failures: what the case says that the shader ignores, e.g. a [bindings.<lang>]
+  // entry naming a uniform or register the shader's reflection does not declare.
+  std::vector<std::string> warnings;
   CellMetrics metrics;
   double interior_threshold = 0;    // the case's tolerance (absolute part)
   double silhouette_threshold = 0;
@@ -155,8 +158,19 @@ struct CacheUse {
   size_t compile_memory_hits = 0;     // of the hits, from this process's own memory
 };
 
+// A run that did not finish: it was interrupted (SIGINT, SIGTERM) and wrote the cells it had.
+struct Interruption {
+  int signal = 0;          // 2 SIGINT, 15 SIGTERM
+  std::string reason;      // "interrupted by SIGINT after 120 of 1400 cells"
+};
+
 struct RunReport {
   ToolVersions tools;
+  // Which run the results belong to: a hash of the selected case files' text and the options
+  // that decide the cells and their images (not the shard), so the shards of one run share
+  // it and `merge` refuses results of different runs. "" in files from before it existed.
+  std::string run_id;
+  std::optional<Interruption> interruption;   // set when the run did not finish
   std::optional<CacheUse> cache;    // absent in merged reports and in files from before it existed
   std::vector<CellResult> results;
   double wall_ms = 0;
@@ -169,8 +183,9 @@ struct RunReport {
     for (const CellResult& r : results) n += r.status == status;
     return n;
   }
-  // Every cell passed or is a known failure.
+  // Every cell passed or is a known failure, and the run finished.
   bool acceptable() const {
+    if (interruption) return false;
     for (const CellResult& r : results)
       if (r.status != "pass" && r.status != "skipped" && !(r.status == "fail" && r.known_failure)) return false;
     return true;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <set>
 
 #include "compile/LegacyGlsl.h"
 
@@ -61,11 +62,16 @@ Result<std::vector<float>> CaseUniforms::concatenate(const Binding& binding, con
   return out;
 }
 
-Result<std::vector<float>> CaseUniforms::value(const UniformBlock& block, const UniformMember& member) const {
+BindingTable::const_iterator CaseUniforms::find_binding(const UniformBlock& block, const UniformMember& member) const {
   auto it = bindings_.find(member.name);
   // The book binds by constant register: c4 is the 16-byte slot at offset 64.
   // Loose (default-block) GLSL uniforms come in a block with no name: no registers there.
   if (it == bindings_.end() && !block.name.empty() && member.offset % 16 == 0) it = bindings_.find("c" + std::to_string(member.offset / 16));
+  return it;
+}
+
+Result<std::vector<float>> CaseUniforms::value(const UniformBlock& block, const UniformMember& member) const {
+  auto it = find_binding(block, member);
   // Legacy GLSL's matrices (gl_ModelViewMatrix, ...) are the scene's unless the case binds them.
   const std::optional<std::string> legacy = it == bindings_.end() ? legacy_glsl_default_binding(member.name) : std::nullopt;
   const Binding legacy_binding{.sources = {BindingSource{.name = legacy.value_or(""), .literal = {}}}};
@@ -118,6 +124,28 @@ Result<void> CaseUniforms::check_all_bound(const CompiledProgram& program) const
     message += (i ? "; " : "") + (problems[i].line > 0 ? "line " + std::to_string(problems[i].line) + ": " : "") +
                problems[i].message;
   return std::unexpected(error(message));
+}
+
+std::vector<std::string> CaseUniforms::unused_bindings(const std::vector<const CompiledProgram*>& programs) const {
+  std::set<std::string> used;
+  for (const CompiledProgram* program : programs)
+    for (const ShaderModule* module : {&program->vertex, &program->fragment}) {
+      for (const UniformBlock& block : module->reflection.uniform_blocks)
+        for (const UniformMember& member : block.members)
+          if (auto it = find_binding(block, member); it != bindings_.end()) used.insert(it->first);
+      for (const SamplerBinding& sampler : module->reflection.samplers) used.insert(sampler.name);   // CaseTextures reads these
+    }
+  std::vector<std::string> warnings;
+  for (const auto& [name, binding] : bindings_) {
+    if (used.contains(name)) continue;
+    const bool is_register = name.size() > 1 && name[0] == 'c' &&
+                             std::all_of(name.begin() + 1, name.end(), [](char ch) { return ch >= '0' && ch <= '9'; });
+    warnings.push_back((binding.line > 0 ? "line " + std::to_string(binding.line) + ": " : std::string()) + "binding '" +
+                       name + "' names " + (is_register ? "a register" : "a uniform") +
+                       " no shader of the case declares in this language (no variant's reflection has such a " +
+                       (is_register ? "$Global register" : "uniform or sampler") + "); it is ignored");
+  }
+  return warnings;
 }
 
 NamedValues bindable_values(const SceneSetup& scene, const std::map<std::string, std::vector<double>>& params) {

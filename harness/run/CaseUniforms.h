@@ -21,10 +21,19 @@ class CaseUniforms final : public UniformResolver {
   // several bindings hears of all of them in one error rather than one per run.
   Result<void> check_all_bound(const CompiledProgram& program) const;
 
+  // The binding table's entries none of `programs` reads: a name (or register) that no
+  // uniform of either stage, and no sampler or texture, is declared as. A language's table
+  // serves every variant of the case, so pass the programs of all of them: an entry only
+  // the per-vertex shader reads is not a mistake in the per-pixel one. Warnings, not
+  // errors: the draw is the same without them, but the case may mean another uniform.
+  std::vector<std::string> unused_bindings(const std::vector<const CompiledProgram*>& programs) const;
+
  private:
   // The binding's values, concatenated, before any layout is applied.
   Result<std::vector<float>> concatenate(const Binding& binding, const UniformMember& member) const;
   Error error(std::string message, int line = 0) const;
+  // The table entry a member is bound by: its name, else its $Global register "cN".
+  BindingTable::const_iterator find_binding(const UniformBlock& block, const UniformMember& member) const;
 
   const BindingTable& bindings_;
   NamedValues values_;      // scene quantities and parameters by name

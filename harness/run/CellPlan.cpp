@@ -59,15 +59,18 @@ std::vector<CellGroup> plan_cells(const std::vector<Case>& cases, std::vector<Ba
           if (!wanted(f.languages, to_string(language))) continue;
           for (BackendSlot& b : backends) {
             if (!wanted(f.backends, b.name)) continue;
-            const std::vector<ShaderPath> paths =
-                b.backend ? (*b.backend)->paths(language) : std::vector<ShaderPath>{ShaderPath::spirv};
-            for (ShaderPath p : paths) group.cells.push_back({language, &b, p});
+            for (ShaderPath p : backend_paths(b.name, language)) group.cells.push_back({language, &b, p});
           }
         }
         if (!group.cells.empty()) groups.push_back(std::move(group));
       }
     }
   return groups;
+}
+
+std::string cell_id(const CellGroup& g, const PlannedCell& cell) {
+  return g.c->name + "/" + g.variant->name + "/" + to_string(cell.language) + "/" + cell.backend->name + "/" +
+         to_string(cell.path) + "/" + g.shape;
 }
 
 Result<Shard> parse_shard(const std::string& text) {

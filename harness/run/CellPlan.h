@@ -56,6 +56,9 @@ struct Shard {
 // "I/N" with 1 <= I <= N.
 Result<Shard> parse_shard(const std::string& text);
 
+// The id its result will have (CellResult::id): case/variant/language/backend/path/shape.
+std::string cell_id(const CellGroup& g, const PlannedCell& cell);
+
 // Group g goes to shard (g mod N) + 1: every shard gets a spread of cases and shapes.
 std::vector<CellGroup> select_shard(std::vector<CellGroup> groups, const Shard& shard);
 

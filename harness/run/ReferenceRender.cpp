@@ -42,13 +42,17 @@ Result<ReferenceImage> render_reference(const Mesh& mesh, const SceneSetup& s, c
   return ReferenceImage{fb->width, fb->height, std::move(fb->rgba), std::move(fb->coverage)};
 }
 
-Result<SurfaceSamples> render_surface_samples(const Mesh& mesh, const SceneSetup& s, const Case& c) {
+reference::Scene surface_scene(const Mesh& mesh, const SceneSetup& s, const Case& c) {
   reference::Scene scene = reference_scene(mesh, s, c);
   // The point-light models shade with the point light whatever the case says.
   const reference::ModelInfo* model = reference::find_model(c.model);
   if (model && (model->light == reference::LightUse::point || model->light == reference::LightUse::spot))
     scene.light = reference::SceneLight::point;
-  auto surface = reference::render_surface(scene);
+  return scene;
+}
+
+Result<SurfaceSamples> render_surface_samples(const Mesh& mesh, const SceneSetup& s, const Case& c) {
+  auto surface = reference::render_surface(surface_scene(mesh, s, c));
   if (!surface) return std::unexpected(Error{.message = surface.error(), .file = c.path, .stage = "reference"});
   return surface_samples(*surface);
 }

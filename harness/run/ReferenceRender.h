@@ -8,6 +8,7 @@
 
 namespace reference {
 struct Perturbation;
+struct Scene;
 }
 
 namespace shaderbed {
@@ -19,8 +20,11 @@ Result<ReferenceImage> render_reference(const Mesh& mesh, const SceneSetup& scen
 Result<ReferenceImage> render_reference(const Mesh& mesh, const SceneSetup& scene, const Case& c, LightingMode mode,
                                         const reference::Perturbation& perturbation);
 
-// N·L, N·V and the interpolated normal's length per pixel, for the convention fits. L is
-// the case's light (a point light when the case or its model uses one).
+// The reference's scene for the case's visible surface: its light is the one the model
+// shades with (the point light for the point- and spot-light models, else the case's).
+reference::Scene surface_scene(const Mesh& mesh, const SceneSetup& scene, const Case& c);
+
+// N·L, N·V and the interpolated normal's length per pixel, for the convention fits.
 Result<SurfaceSamples> render_surface_samples(const Mesh& mesh, const SceneSetup& scene, const Case& c);
 
 }  // namespace shaderbed

@@ -4,12 +4,15 @@
 // backend, language or shape) is an Error; a cell that cannot be drawn is a result with
 // status "error", so one broken shader never hides the others.
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "backends/Backend.h"
 #include "core/Error.h"
 #include "report/Results.h"
+#include "run/CellPlan.h"
+#include "run/Expectations.h"
 
 namespace shaderbed {
 
@@ -38,7 +41,44 @@ struct RunOptions {
   bool per_pixel_reference = false;
   // Progress; called from the worker threads, one call at a time.
   std::function<void(size_t done, size_t total, const CellResult&)> on_cell;
+
+  // Isolation (run/IsolatedRun.h): with a worker binary (the shaderbed executable), cells
+  // run in child processes that the run supervises, so a compiler crash, a runaway
+  // allocation or a draw that never ends is one error cell and the run goes on; "" runs
+  // them in this process.
+  std::string worker_binary;
+  double compile_timeout_s = 30;   // compiling one program's stages (front ends, SPIR-V tools, SPIRV-Cross)
+  double draw_timeout_s = 10;      // one cell's draw: pipeline build, warm-up and timed repeats
+  size_t worker_memory_mb = 8192;  // a worker's address space (a run at 256 px peaks near 1.1 GB)
+  // Called before each step of a cell that runs untrusted input ("compile", "draw") and
+  // after it ("judge"), from the worker thread; an isolated worker reports it to the
+  // supervisor, which times the step.
+  std::function<void(const std::string& cell_id, const char* step)> on_step;
 };
+
+// A run's plan: the selected cases (the groups point into them), the known failures, the
+// backends it needs (not started: planning needs only their names) and the cell groups of
+// its shard, in a deterministic order, so an isolated worker plans the same groups from
+// the same options.
+struct SuitePlan {
+  std::vector<Case> cases;
+  std::vector<KnownFailure> known;
+  std::vector<std::string> backend_names;
+  std::vector<BackendSlot> backends;
+  std::vector<CellGroup> groups;
+  size_t cells = 0;
+};
+
+// Bad input (an unknown case, model, backend, language or shape; a filter that selects
+// nothing; a bad shard or expectations file) is an Error before anything starts.
+Result<std::unique_ptr<SuitePlan>> plan_suite(const RunOptions& options);
+
+// `g` with its cells on `backends`, started in the order of plan.backend_names.
+CellGroup on_backends(const CellGroup& g, const SuitePlan& plan, std::vector<BackendSlot>& backends);
+
+// Consecutive groups of one case x variant (they share programs, so one worker runs them
+// all and builds each pipeline once), largest bundle first.
+std::vector<std::vector<size_t>> bundles_of(const std::vector<CellGroup>& groups);
 
 Result<RunReport> run_suite(const RunOptions& options);
 

@@ -68,15 +68,7 @@ Result<void> save_stored_image(const std::string& dir, const CellResult& r, cons
     for (int c = 0; c < 4; ++c) pixels[i * 5 + c] = image.rgba[i * 4 + c];
     pixels[i * 5 + 4] = image.coverage[i] ? 1.0f : 0.0f;
   }
-  // Written beside its final name and renamed, so a killed run leaves no half image.
-  const fs::path partial = file.string() + ".partial.exr";
-  if (auto ok = write_image_file(partial.string(), image.width, image.height, 5, PixelType::float32, pixels.data());
-      !ok)
-    return ok;
-  std::error_code ec;
-  fs::rename(partial, file, ec);
-  if (ec) return std::unexpected(stored_error(file.string(), "cannot move the image into place: " + ec.message()));
-  return {};
+  return write_image_file(file.string(), image.width, image.height, 5, PixelType::float32, pixels.data());
 }
 
 Result<void> write_stored_manifest(const std::string& dir, const RunReport& report, int size) {

@@ -1,4 +1,5 @@
 #include "scene/TomlKeys.h"
+#include "core/BoundedFile.h"
 
 #include <algorithm>
 #include <vector>
@@ -35,8 +36,10 @@ std::string closest_key(std::string_view key, std::initializer_list<std::string_
 }
 
 Result<toml::table> parse_toml_file(const std::string& path, const std::string& stage) {
+  auto text = read_bounded_file(path, "TOML file", stage);
+  if (!text) return std::unexpected(text.error());
   try {
-    return toml::parse_file(path);
+    return toml::parse(*text, path);
   } catch (const toml::parse_error& e) {
     return std::unexpected(Error{.message = std::string(e.description()), .file = path,
                                  .line = int(e.source().begin.line), .column = int(e.source().begin.column),

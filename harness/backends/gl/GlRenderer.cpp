@@ -100,10 +100,7 @@ Result<std::unique_ptr<GlRenderer>> GlRenderer::create(OsMesaContext::Profile pr
   return renderer;
 }
 
-std::vector<ShaderPath> GlRenderer::paths(Language language) const {
-  if (language == Language::glsl) return {ShaderPath::native_glsl, ShaderPath::spirv, ShaderPath::cross_glsl};
-  return {ShaderPath::spirv, ShaderPath::cross_glsl};
-}
+std::vector<ShaderPath> GlRenderer::paths(Language language) const { return backend_paths("gl", language); }
 
 Result<RenderOutput> GlRenderer::render(const DrawJob& job) {
   if (job.path == ShaderPath::native_glsl && !job.program.native_glsl_skip_reason.empty())

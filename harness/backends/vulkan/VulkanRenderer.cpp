@@ -23,6 +23,7 @@ std::string& vulkan_device_choice() {
 }  // namespace
 
 void choose_vulkan_device(std::string index_or_name) { vulkan_device_choice() = std::move(index_or_name); }
+const std::string& chosen_vulkan_device() { return vulkan_device_choice(); }
 
 Result<std::unique_ptr<Backend>> make_vulkan_backend() {
   auto renderer = vulkan::VulkanRenderer::create(vulkan_device_choice());

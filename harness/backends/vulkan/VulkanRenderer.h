@@ -27,7 +27,7 @@ class VulkanRenderer final : public Backend {
   std::string_view name() const override { return "vulkan"; }
   std::string driver_version() const override { return device_->driver_version(); }
   std::string device_name() const override { return device_->device_name(); }
-  std::vector<ShaderPath> paths(Language) const override { return {ShaderPath::spirv}; }
+  std::vector<ShaderPath> paths(Language language) const override { return backend_paths("vulkan", language); }
   // Not reentrant: one draw at a time per renderer.
   Result<RenderOutput> render(const DrawJob& job) override;
 

@@ -26,6 +26,7 @@ Command add_bench_command(CLI::App& app);
 Command add_devices_command(CLI::App& app);
 Command add_init_command(CLI::App& app);
 Command add_port_command(CLI::App& app);
+Command add_cell_worker_command(CLI::App& app);   // hidden: an isolated run's worker process
 
 // --cache-dir, --no-driver-cache, --no-compile-cache on the root app, accepted after any
 // subcommand too (CacheOptions.cpp). Call after adding the subcommands and before any

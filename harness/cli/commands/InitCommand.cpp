@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands/Command.h"
+#include "core/ThisExecutable.h"
 #include "core/AtomicFile.h"
 #include "core/WritablePath.h"
 #include "report/ConsoleProgress.h"
@@ -54,6 +55,7 @@ std::vector<std::string> check_run(const std::string& case_path, int size) {
   options.cases = {case_path};
   options.size = size;
   options.timing = {.warmup = 0, .runs = 0};
+  options.worker_binary = this_executable().string();   // the user's shaders: a crash costs cells, not the command
   ConsoleProgress progress(stderr, isatty(STDERR_FILENO), false);
   options.on_cell = [&](size_t done, size_t total, const CellResult& cell) { progress.update(done, total, cell); };
   auto report = run_suite(options);

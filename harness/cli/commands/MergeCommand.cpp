@@ -10,6 +10,7 @@
 #include "run/Runner.h"
 #include "report/ConsoleReport.h"
 #include "report/JsonReport.h"
+#include "report/ShardMerge.h"
 
 namespace shaderbed {
 namespace {
@@ -30,25 +31,21 @@ Command add_merge_command(CLI::App& app) {
   add_console_flags(cmd, args->console);
   return {cmd, [args] {
             if (!args->outputs.load_charts() || !args->outputs.check_writable()) return kExitBadInput;
-            RunReport merged;
-            std::set<std::string> seen;
+            std::vector<RunReport> parts;
             for (const std::string& path : args->inputs) {
               auto part = read_json(path);
               if (!part) {
                 fmt::print(stderr, "shaderbed: {}\n", part.error().to_string());
                 return kExitBadInput;
               }
-              if (merged.results.empty()) merged.tools = part->tools;
-              merged.wall_ms += part->wall_ms;
-              for (CellResult& r : part->results) {
-                if (!seen.insert(r.id()).second) {
-                  fmt::print(stderr, "shaderbed: {}: cell {} is already in an earlier file\n", path, r.id());
-                  return kExitBadInput;
-                }
-                merged.results.push_back(std::move(r));
-              }
+              parts.push_back(std::move(*part));
             }
-            sort_results(merged);
+            auto joined = merge_shards(std::move(parts), args->inputs);
+            if (!joined) {
+              fmt::print(stderr, "shaderbed: {}\n", joined.error().to_string());
+              return kExitBadInput;
+            }
+            RunReport& merged = *joined;
             print_console_report(merged, stdout, args->console);
             if (!args->outputs.write(merged)) return kExitFail;
             return merged.acceptable() ? 0 : kExitFail;

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands/Command.h"
+#include "core/ThisExecutable.h"
 #include "cli/commands/ReportOutputs.h"
 #include "core/WritablePath.h"
 #include "report/ConsoleProgress.h"
@@ -96,6 +97,7 @@ Command add_port_command(CLI::App& app) {
             RunOptions options = args->run;
             options.cases_dir = plan->out_dir;
             options.cases = plan->case_paths;
+            options.worker_binary = this_executable().string();   // isolated, as `run`
             ConsoleProgress progress(stderr, isatty(STDERR_FILENO), args->console.view == ConsoleView::quiet);
             options.on_cell = [&](size_t done, size_t total, const CellResult& cell) { progress.update(done, total, cell); };
             auto report = run_suite(options);

@@ -7,6 +7,7 @@
 
 #include "cli/commands/Command.h"
 #include "cli/commands/ReportOutputs.h"
+#include "core/ThisExecutable.h"
 #include "core/WritablePath.h"
 #include "run/Runner.h"
 #include "report/ConsoleProgress.h"
@@ -18,6 +19,7 @@ namespace {
 
 struct RunArguments {
   RunOptions options;
+  bool in_process = false;
   ReportOutputs outputs;
   ConsoleOptions console;
 };
@@ -65,6 +67,19 @@ Command add_run_command(CLI::App& app) {
   cmd->add_option("--warmup", run.timing.warmup, "Untimed repeats before the timed ones")
       ->capture_default_str()
       ->check(CLI::Range(0, 100));
+  cmd->add_flag("--no-isolation", args->in_process,
+                 "Compile and draw in this process instead of supervised worker processes (faster to debug; a "
+                 "compiler crash or a runaway draw then ends the run)");
+  cmd->add_option("--draw-timeout", run.draw_timeout_s,
+                  "Seconds one cell's draw may take (pipeline build, warm-up and timed repeats) before its worker is "
+                  "killed: the cell is 'error: timeout' and a fresh worker goes on")
+      ->capture_default_str()
+      ->check(CLI::Range(0.1, 86400.0));
+  cmd->add_option("--compile-timeout", run.compile_timeout_s,
+                  "Seconds compiling one program's shaders may take before its worker is killed (its cells are "
+                  "errors)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.1, 86400.0));
   cmd->add_option("--jobs,-j", run.jobs,
                   "Worker threads, each with its own Vulkan device and GL context; 0 = one per core. Timings are "
                   "steadiest with --jobs 1")
@@ -82,6 +97,7 @@ Command add_run_command(CLI::App& app) {
                 }
             ConsoleProgress progress(stderr, isatty(STDERR_FILENO), args->console.view == ConsoleView::quiet);
             RunOptions options = args->options;
+            if (!args->in_process) options.worker_binary = this_executable().string();
             options.on_cell = [&](size_t done, size_t total, const CellResult& cell) {
               progress.update(done, total, cell);
             };
@@ -98,6 +114,8 @@ Command add_run_command(CLI::App& app) {
               fmt::print("stored images: {} (judge later runs with --against {})\n",
                          (std::filesystem::absolute(options.save_images_dir) / "manifest.json").string(),
                          options.save_images_dir);
+            // Interrupted: the cells it had are written above, marked incomplete.
+            if (report->interruption) return 128 + report->interruption->signal;
             return report->acceptable() ? 0 : kExitFail;
           }};
 }

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "core/ThisExecutable.h"
 #include "core/ChildProcess.h"
 #include "core/ScratchDirectory.h"
 
@@ -55,9 +56,8 @@ std::string nir_dump_helper() {
 #ifdef SHADERBED_NIR_DUMP_BINARY
   if (fs::exists(SHADERBED_NIR_DUMP_BINARY)) return SHADERBED_NIR_DUMP_BINARY;
 #endif
-  std::error_code ec;
-  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
-  return ec ? std::string("shaderbed-nir-dump") : (self.parent_path() / "shaderbed-nir-dump").string();
+  const fs::path self = this_executable();
+  return self.empty() ? std::string("shaderbed-nir-dump") : (self.parent_path() / "shaderbed-nir-dump").string();
 }
 
 Result<NirProgramCounts> nir_counts(const CompiledProgram& program, const NirRequest& given) {

@@ -1,0 +1,72 @@
+#include "report/ShardMerge.h"
+
+#include <algorithm>
+#include <charconv>
+#include <map>
+#include <set>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+namespace shaderbed {
+namespace {
+
+// "I/N" -> (I, N); (0, 0) when the part is no shard.
+std::pair<int, int> shard_of(const std::string& text) {
+  const size_t slash = text.find('/');
+  int index = 0, count = 0;
+  if (slash == std::string::npos) return {0, 0};
+  std::from_chars(text.data(), text.data() + slash, index);
+  std::from_chars(text.data() + slash + 1, text.data() + text.size(), count);
+  return {index, count};
+}
+
+}  // namespace
+
+Result<RunReport> merge_shards(std::vector<RunReport> parts, const std::vector<std::string>& paths) {
+  RunReport merged;
+  std::set<std::string> seen;
+  std::map<int, std::string> shards;   // index -> the file that holds it
+  int shard_count = 0;
+  std::vector<std::string> interrupted;
+  for (size_t i = 0; i < parts.size(); ++i) {
+    RunReport& part = parts[i];
+    const std::string& path = paths[i];
+    const auto bad = [&](std::string message) {
+      return std::unexpected(Error{.message = std::move(message), .file = path, .stage = "merge"});
+    };
+    if (!part.run_id.empty()) {
+      if (merged.run_id.empty()) merged.run_id = part.run_id;
+      else if (merged.run_id != part.run_id)
+        return bad(fmt::format("run {} is not the run of the files before it ({}): different cases, options or "
+                               "case files; merge the shards of one run",
+                               part.run_id, merged.run_id));
+    }
+    if (const auto [index, count] = shard_of(part.shard); count > 0) {
+      if (shard_count && count != shard_count)
+        return bad(fmt::format("shard {} is one of {}, the files before it of {}", part.shard, count, shard_count));
+      shard_count = count;
+      if (const auto [it, added] = shards.emplace(index, path); !added)
+        return bad(fmt::format("shard {} is also in {}", part.shard, it->second));
+    }
+    if (part.interruption) interrupted.push_back(path + ": " + part.interruption->reason);
+    if (merged.results.empty()) merged.tools = part.tools;
+    merged.wall_ms += part.wall_ms;
+    for (CellResult& r : part.results) {
+      if (!seen.insert(r.id()).second) return bad("cell " + r.id() + " is already in an earlier file");
+      merged.results.push_back(std::move(r));
+    }
+  }
+  std::vector<std::string> missing;
+  for (int i = 1; i <= shard_count; ++i)
+    if (!shards.contains(i)) missing.push_back(fmt::format("{}/{}", i, shard_count));
+  std::string incomplete;
+  if (!missing.empty()) incomplete = fmt::format("shard{} {} missing", missing.size() > 1 ? "s" : "", fmt::join(missing, ", "));
+  for (const std::string& line : interrupted) incomplete += (incomplete.empty() ? "" : "; ") + line;
+  if (!incomplete.empty()) merged.interruption = Interruption{0, incomplete};
+  std::stable_sort(merged.results.begin(), merged.results.end(),
+                   [](const CellResult& a, const CellResult& b) { return a.id() < b.id(); });
+  return merged;
+}
+
+}  // namespace shaderbed

@@ -1,0 +1,37 @@
+#pragma once
+// What an isolated run's supervisor and its worker processes say to each other
+// (run/IsolatedRun.h). The supervisor writes the run's options as one JSON line on the
+// worker's stdin, then one command a line: "group INDEX [SKIPPED-CELL-ID...]" runs a group
+// of the plan both sides make from the same options. The worker answers on its events pipe,
+// one line each:
+//   hello <RunReport JSON: the toolchain of the backends it started>
+//   step <cell id> <compile|draw|judge>       before each untrusted step, and after it
+//   cell <RunReport JSON holding one result>
+//   done <disk hits> <compiles> <memory hits>   the group is finished (compile cache counts so far)
+#include <string>
+#include <string_view>
+
+#include "compile/CompileCache.h"
+#include "core/Error.h"
+#include "run/Runner.h"
+
+namespace shaderbed {
+
+// The options a worker needs, with the process-wide settings the command line set (the
+// cache folder and switches, --vulkan-device), as one line of JSON.
+std::string worker_options_line(const RunOptions& options);
+
+// Reads that line and applies its process-wide settings to this process.
+Result<RunOptions> apply_worker_options_line(std::string_view line);
+
+struct WorkerEvent {
+  enum class Kind { hello, step, cell, done, unknown } kind = Kind::unknown;
+  std::string cell_id;   // step
+  std::string step;      // step: "compile", "draw", "judge"
+  RunReport report;      // hello (tools), cell (one result)
+  CompileCacheCounts compiles;   // done
+};
+
+Result<WorkerEvent> parse_worker_event(std::string_view line);
+
+}  // namespace shaderbed
