@@ -325,6 +325,13 @@ Result<HardReport> run_hard_cases(const HardOptions& o) {
   const auto start = Clock::now();
   auto cases = select_cases(o);
   if (!cases) return std::unexpected(cases.error());
+  // Hard cases probe a model's numerics at chosen configurations: a case judged against a
+  // render has no model to evaluate there.
+  for (const Case& c : *cases)
+    if (c.differential())
+      return std::unexpected(Error{.message = "case '" + c.name + "' has no model (it is judged against a render): "
+                                              "hard probes a lighting model's numerics",
+                                   .file = c.path, .stage = "case"});
   std::vector<BackendSlot> backends = start_backends(o.backends);
 
   HardReport report;
