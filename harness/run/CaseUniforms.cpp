@@ -1,6 +1,7 @@
 #include "run/CaseUniforms.h"
 
 #include <algorithm>
+#include <cctype>
 #include <optional>
 #include <set>
 
@@ -126,24 +127,43 @@ Result<void> CaseUniforms::check_all_bound(const CompiledProgram& program) const
   return std::unexpected(error(message));
 }
 
-std::vector<std::string> CaseUniforms::unused_bindings(const std::vector<const CompiledProgram*>& programs) const {
+namespace {
+
+// `word` in `text` with no identifier character on either side.
+bool names_word(const std::string& text, const std::string& word) {
+  const auto identifier = [](char ch) { return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_'; };
+  for (size_t at = text.find(word); at != std::string::npos; at = text.find(word, at + 1)) {
+    const bool before = at > 0 && identifier(text[at - 1]);
+    const bool after = at + word.size() < text.size() && identifier(text[at + word.size()]);
+    if (!before && !after) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+std::vector<std::string> CaseUniforms::unused_bindings(const CompiledProgram& program,
+                                                       const std::vector<std::string>& other_sources) const {
   std::set<std::string> used;
-  for (const CompiledProgram* program : programs)
-    for (const ShaderModule* module : {&program->vertex, &program->fragment}) {
-      for (const UniformBlock& block : module->reflection.uniform_blocks)
-        for (const UniformMember& member : block.members)
-          if (auto it = find_binding(block, member); it != bindings_.end()) used.insert(it->first);
-      for (const SamplerBinding& sampler : module->reflection.samplers) used.insert(sampler.name);   // CaseTextures reads these
-    }
+  for (const ShaderModule* module : {&program.vertex, &program.fragment}) {
+    for (const UniformBlock& block : module->reflection.uniform_blocks)
+      for (const UniformMember& member : block.members)
+        if (auto it = find_binding(block, member); it != bindings_.end()) used.insert(it->first);
+    for (const SamplerBinding& sampler : module->reflection.samplers) used.insert(sampler.name);   // CaseTextures reads these
+  }
   std::vector<std::string> warnings;
   for (const auto& [name, binding] : bindings_) {
     if (used.contains(name)) continue;
+    // A name with an index or member ("gl_LightSource[0].position") is searched by its base.
+    const std::string base = name.substr(0, name.find_first_of("[."));
+    if (std::ranges::any_of(other_sources, [&](const std::string& text) { return names_word(text, base); })) continue;
     const bool is_register = name.size() > 1 && name[0] == 'c' &&
                              std::all_of(name.begin() + 1, name.end(), [](char ch) { return ch >= '0' && ch <= '9'; });
     warnings.push_back((binding.line > 0 ? "line " + std::to_string(binding.line) + ": " : std::string()) + "binding '" +
                        name + "' names " + (is_register ? "a register" : "a uniform") +
-                       " no shader of the case declares in this language (no variant's reflection has such a " +
-                       (is_register ? "$Global register" : "uniform or sampler") + "); it is ignored");
+                       " this shader does not declare (its reflection has no such " +
+                       (is_register ? "$Global register" : "uniform or sampler") +
+                       ") and no other variant's shader of this language names; it is ignored");
   }
   return warnings;
 }

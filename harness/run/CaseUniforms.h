@@ -21,12 +21,15 @@ class CaseUniforms final : public UniformResolver {
   // several bindings hears of all of them in one error rather than one per run.
   Result<void> check_all_bound(const CompiledProgram& program) const;
 
-  // The binding table's entries none of `programs` reads: a name (or register) that no
-  // uniform of either stage, and no sampler or texture, is declared as. A language's table
-  // serves every variant of the case, so pass the programs of all of them: an entry only
-  // the per-vertex shader reads is not a mistake in the per-pixel one. Warnings, not
-  // errors: the draw is the same without them, but the case may mean another uniform.
-  std::vector<std::string> unused_bindings(const std::vector<const CompiledProgram*>& programs) const;
+  // The binding table's entries `program` does not read (no uniform of either stage, no
+  // sampler or texture is declared as that name or register) and that no text of
+  // `other_sources` names as a word. A language's table serves every variant of the case:
+  // an entry only the per-vertex shader reads is not a mistake in the per-pixel one. The
+  // other variants are searched as text, not compiled: compiling them in this cell's name
+  // would blame their compiler crashes on it. Warnings, not errors: the draw is the same
+  // without them, but the case may mean another uniform.
+  std::vector<std::string> unused_bindings(const CompiledProgram& program,
+                                           const std::vector<std::string>& other_sources) const;
 
  private:
   // The binding's values, concatenated, before any layout is applied.

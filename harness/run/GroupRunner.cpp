@@ -21,6 +21,7 @@
 #include "run/ProgramCache.h"
 #include "run/ReferenceRender.h"
 #include "run/StoredImages.h"
+#include "core/BoundedFile.h"
 #include "core/Fnv1a.h"
 #include "reference/Reference.h"
 #include "compare/Attribution.h"
@@ -474,11 +475,12 @@ class GroupWork {
     // The table serves every variant in this language: only a run of them all can tell a
     // binding none of them declares (a --variant filter would compile the others just for it).
     if (!variation.bindings && o_.variants.empty()) {
-      std::vector<const CompiledProgram*> programs{&*compiled.program};
+      std::vector<std::string> others;
       for (const Variant& other : c.variants)
         if (&other != &variant && other.shaders.contains(cell.language))
-          if (const CachedProgram& p = caches_.programs.get(c, other, cell.language); p.program) programs.push_back(&*p.program);
-      r.warnings = uniforms.unused_bindings(programs);
+          for (const std::string* file : {&other.shaders.at(cell.language).vertex, &other.shaders.at(cell.language).fragment})
+            others.push_back(read_bounded_file(*file, "shader file", "compile").value_or(""));
+      r.warnings = uniforms.unused_bindings(*compiled.program, others);
     }
     CaseTextures textures(table, c.textures.for_language(cell.language), *lut, c.path,
                           &compiled.program->sampler_settings);

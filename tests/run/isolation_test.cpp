@@ -113,6 +113,32 @@ float4 main(float3 : TEXCOORD0) : COLOR { return float4(1, 1, 1, 1); }
   EXPECT_EQ(passed, 6);
 }
 
+// The crashing port in the original's own language: the original's cells, which share the
+// binding table with it, still pass (nothing compiles the port in their name).
+TEST(Isolation, ACrashingVariantDoesNotTakeItsLanguagesOtherVariantsDown) {
+  shaderbed::test::TempDir dir("isolation");
+  // glslang 12 dereferences null on an HLSL entry parameter without a name (DESIGN.md).
+  const std::string the_case = write_case(dir, "hlsl", R"(// Lambert's vertex stage (book §5.5).
+float4x4 Transform;
+float4 main(float4 p : POSITION) : POSITION { return mul(Transform, p); }
+)",
+                                          R"(// A pixel stage with an unnamed parameter (crashes glslang 12).
+float4 main(int) : COLOR0 { return 1; }
+)");
+  const std::string results = dir / "r.json";
+  const auto [status, out] = shaderbed_cli("run --case " + the_case + " --shape sphere --size 32 --repeat 0 -q --json " + results);
+  EXPECT_EQ(status, 1) << out;
+  const json j = read_json(results);
+  int errors = 0, passed = 0;
+  for (const json& r : j["results"]) {
+    const bool port = r["variant"] == "port";
+    EXPECT_EQ(r["status"], port ? "error" : "pass") << r["id"] << ": " << r["message"];
+    (port ? errors : passed) += 1;
+  }
+  EXPECT_EQ(errors, 3);
+  EXPECT_EQ(passed, 3);
+}
+
 TEST(Isolation, ADrawThatNeverEndsIsATimeoutOnBothBackends) {
   shaderbed::test::TempDir dir("isolation");
   const std::string the_case = write_case(dir, "glsl", kGlslVertex, kSlowFragment,
