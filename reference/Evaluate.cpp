@@ -4,18 +4,20 @@
 
 #include "reference/ModelRegistry.h"
 #include "reference/Reference.h"
+#include "reference/StableVector.h"
 
 namespace reference {
 namespace {
 
 bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
+// Any finite non-zero vector has a direction: normalised with a scaled norm, so lengths
+// whose squares under- or overflow (1e-200, 1e200) are accepted.
 std::expected<glm::dvec3, std::string> unit(const glm::dvec3& v, const char* what) {
-  const double length = glm::length(v);
-  if (!finite(v) || !std::isfinite(length) || length == 0.0) {
+  if (!finite(v) || v == glm::dvec3(0.0)) {
     return std::unexpected(std::string(what) + " must be a finite, non-zero vector");
   }
-  return v / length;
+  return stable::normalize(v);
 }
 
 bool is_lut_parameter(const std::string& name) { return name == "lut_size" || name == "lut_rows"; }

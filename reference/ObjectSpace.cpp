@@ -1,4 +1,5 @@
 #include "reference/ObjectSpace.h"
+#include "reference/StableVector.h"
 
 namespace reference {
 
@@ -8,7 +9,7 @@ ObjectSpaceLighting to_object_space(const Lights& lights, const Camera& camera, 
     const glm::dvec4 object = world_to_object * glm::dvec4(p, 1.0);
     return glm::dvec3(object) / object.w;  // w stays 1 for an affine world matrix
   };
-  return {glm::normalize(glm::dvec3(world_to_object * glm::dvec4(lights.direction, 0.0))), position(lights.position),
+  return {stable::normalize(glm::dvec3(world_to_object * glm::dvec4(lights.direction, 0.0))), position(lights.position),
           position(camera.eye)};
 }
 

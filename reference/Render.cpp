@@ -7,6 +7,7 @@
 #include "reference/ObjectSpace.h"
 #include "reference/Reference.h"
 #include "reference/SceneLighting.h"
+#include "reference/StableVector.h"
 #include "reference/VisibleSurface.h"
 
 namespace reference {
@@ -49,7 +50,7 @@ std::vector<glm::dvec3> shade_vertices(const Mesh& mesh, const LightingModel& mo
   std::vector<glm::dvec3> colours;
   colours.reserve(mesh.vertices.size());
   for (const Vertex& vertex : mesh.vertices) {
-    colours.push_back(model.shade({vertex.position, glm::normalize(vertex.normal), vertex.tangent, vertex.uv},
+    colours.push_back(model.shade({vertex.position, stable::normalize(vertex.normal), vertex.tangent, vertex.uv},
                                   lighting.at(vertex.position)));
   }
   return colours;
@@ -61,7 +62,7 @@ std::vector<glm::dvec3> shade_vertices(const Mesh& mesh, const LightingModel& mo
 glm::dvec3 shade_pixel(const Mesh& mesh, const VisibleSample& sample, const LightingModel& model,
                        const PointLighting& lighting, const Perturbation& perturbation) {
   SurfacePoint point = interpolate_surface(mesh, sample);
-  if (!perturbation.unnormalised_normal) point.normal = glm::normalize(point.normal);
+  if (!perturbation.unnormalised_normal) point.normal = stable::normalize(point.normal);
   return model.shade(point, lighting.at(point.position));
 }
 

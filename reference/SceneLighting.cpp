@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "reference/ModelRegistry.h"
+#include "reference/StableVector.h"
 
 namespace reference {
 namespace {
@@ -16,7 +17,7 @@ class PointLit final : public LightingModel {
 
   glm::dvec3 shade(const SurfacePoint& point, const ObjectSpaceLighting& lighting) const override {
     ObjectSpaceLighting at_point = lighting;
-    at_point.light_direction = glm::normalize(lighting.light_position - point.position);
+    at_point.light_direction = stable::normalize(lighting.light_position - point.position);
     return model_->shade(point, at_point);
   }
 

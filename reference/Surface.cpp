@@ -1,6 +1,7 @@
 #include "reference/Surface.h"
 
 #include "reference/ObjectSpace.h"
+#include "reference/StableVector.h"
 #include "reference/VisibleSurface.h"
 
 namespace reference {
@@ -22,8 +23,8 @@ std::expected<SurfaceBuffer, std::string> render_surface(const Scene& scene) {
     sample.position = point.position;
     sample.normal = point.normal;
     sample.to_light =
-        point_light ? glm::normalize(lighting.light_position - point.position) : lighting.light_direction;
-    sample.to_eye = glm::normalize(lighting.eye_position - point.position);
+        point_light ? stable::normalize(lighting.light_position - point.position) : lighting.light_direction;
+    sample.to_eye = stable::normalize(lighting.eye_position - point.position);
     sample.uv = point.uv;
     surface.coverage[pixel] = 1;
   }

@@ -21,13 +21,19 @@ class BlinnPhong final : public LightingModel {
     const glm::dvec3& normal = point.normal;
     const glm::dvec3& to_light = lighting.light_direction;
     const glm::dvec3 to_eye = shading::to_eye(point, lighting);
-    // H is undefined when L = -V (normalize of a zero vector; the GPU gives NaN).
-    // docs/models.md does not say; the reference takes N·H = 0 there, no highlight. The
-    // scenes never reach it (the eye would have to look up at the light through the
-    // surface); evaluate() can.
+    // H = normalize(L + V) is undefined only where L + V is exactly zero (L = -V; the GPU
+    // gives NaN). docs/errata.md: the reference takes N·H = 0 there, no highlight. Any
+    // other sum, however short, has a direction: the facet angle comes from |N × (L + V)|
+    // and N·(L + V), which need no normalisation, and (N·H)^n from 1 - N·H near the peak.
     const glm::dvec3 sum = to_light + to_eye;
-    const double n_dot_h = glm::dot(sum, sum) < 1e-12 ? 0.0 : glm::dot(normal, glm::normalize(sum));
-    return diffuse_ * sat(glm::dot(normal, to_light)) + specular_ * std::pow(sat(n_dot_h), power_);
+    double highlight = std::pow(0.0, power_);
+    if (sum != glm::dvec3(0.0) && shading::plain_power(power_)) {
+      highlight = std::pow(sat(glm::dot(normal, stable::normalize(sum))), power_);
+    } else if (sum != glm::dvec3(0.0)) {
+      const shading::FacetCosine n_dot_h = shading::facet_cosine(normal, shading::angle_between(normal, sum));
+      highlight = shading::power_near_one(n_dot_h.cos, n_dot_h.one_minus, power_);
+    }
+    return diffuse_ * sat(glm::dot(normal, to_light)) + specular_ * highlight;
   }
 
  private:

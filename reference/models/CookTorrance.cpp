@@ -30,16 +30,35 @@ class CookTorrance final : public LightingModel {
     const double n_dot_v = glm::dot(normal, to_eye);
     if (!(n_dot_l > 0 && n_dot_v > 0)) return glm::dvec3(0.0);
 
-    const glm::dvec3 h = shading::half_vector(to_light, to_eye);
-    const double n_dot_h = sat(glm::dot(normal, h));
-    const double v_dot_h = glm::dot(to_eye, h);  // > 0: H lies between L and V
+    // The facet angle a = acos(N·H) as atan2(|N × H|, N·H) from the unnormalised L + V:
+    // acos near 1 loses half the digits, which a sharp lobe (small m) magnifies
+    // (docs/hard-cases.md). 1 - V·H likewise from the angle between V and L + V, for
+    // Fresnel at r0 = 0 near retro-reflection. An unnormalised N (the unnormalised_normal
+    // counterfactual) keeps the literal acos(sat(N·H)).
+    const glm::dvec3 sum = to_light + to_eye;
+    const double sum_length = stable::length(sum);
+    double n_dot_h, angle;
+    if (shading::normal_length(normal) == 1.0) {
+      const double along = glm::dot(normal, sum);
+      n_dot_h = sat(along / sum_length);
+      angle = std::atan2(stable::length(glm::cross(normal, sum)), along);
+    } else {
+      n_dot_h = sat(glm::dot(normal, sum / sum_length));
+      angle = shading::clamped_acos(n_dot_h);
+    }
+    // V·H > 0 (H lies between L and V); 1 - V·H = |V × S|² / (|S| (|S| + V·S)), S = L + V.
+    const double v_along = glm::dot(to_eye, sum);
+    const double v_dot_h = v_along / sum_length;
+    const glm::dvec3 v_across = glm::cross(to_eye, sum);
+    const double one_minus_v_dot_h = glm::dot(v_across, v_across) / (sum_length * (sum_length + v_along));
 
-    const double angle_over_m = shading::clamped_acos(n_dot_h) / slope_m_;
+    const double angle_over_m = angle / slope_m_;
     const double distribution = gaussian_c_ * std::exp(-angle_over_m * angle_over_m);
     const double geometry = std::max(
         0.0, std::min({1.0, 2.0 * n_dot_h * n_dot_v / v_dot_h, 2.0 * n_dot_h * n_dot_l / v_dot_h}));
-    const double fresnel = fresnel_r0_ + (1.0 - fresnel_r0_) * std::pow(1.0 - v_dot_h, 5.0);
-    return diffuse_ * (fresnel * distribution * geometry / (n_dot_l * n_dot_v));
+    const double fresnel = fresnel_r0_ + (1.0 - fresnel_r0_) * std::pow(one_minus_v_dot_h, 5.0);
+    // Divided one dot at a time: (N·L)(N·V) underflows when both are grazing.
+    return diffuse_ * (fresnel * distribution * geometry / n_dot_l / n_dot_v);
   }
 
  private:

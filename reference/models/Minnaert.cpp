@@ -19,7 +19,13 @@ class Minnaert final : public LightingModel {
   glm::dvec3 shade(const SurfacePoint& point, const ObjectSpaceLighting& lighting) const override {
     const double n_dot_l = sat(glm::dot(point.normal, lighting.light_direction));
     const double n_dot_v = sat(glm::dot(point.normal, shading::to_eye(point, lighting)));
-    return diffuse_ * (std::pow(n_dot_v * n_dot_l, power_) * n_dot_l);
+    // The product of two grazing dots underflows (1e-200 · 1e-200) where its power need
+    // not: then the power of each factor.
+    const double product = n_dot_v * n_dot_l;
+    const double term = product >= 0x1p-960 || n_dot_v == 0.0 || n_dot_l == 0.0
+                            ? std::pow(product, power_)
+                            : std::pow(n_dot_v, power_) * std::pow(n_dot_l, power_);
+    return diffuse_ * (term * n_dot_l);
   }
 
  private:

@@ -7,6 +7,7 @@
 
 #include "reference/Parameters.h"
 #include "reference/models/Models.h"
+#include "reference/models/Shading.h"
 
 namespace reference {
 namespace {
@@ -20,10 +21,19 @@ class Phong final : public LightingModel {
     const glm::dvec3& normal = point.normal;
     const glm::dvec3& to_light = lighting.light_direction;
     const double n_dot_l = glm::dot(normal, to_light);
-    const glm::dvec3 reflection = glm::normalize(2.0 * normal * n_dot_l - to_light);
-    const glm::dvec3 to_eye = glm::normalize(lighting.eye_position - point.position);
-    return diffuse_ * std::max(0.0, n_dot_l) +
-           specular_ * std::pow(std::max(0.0, glm::dot(reflection, to_eye)), power_);
+    const glm::dvec3 reflection = shading::reflection(normal, to_light);
+    // Above plain_power_limit, R·V and 1 - R·V from the angle between R and V, so a high
+    // power near the mirror direction does not multiply R·V's last-ulp error
+    // (docs/errata.md, the extremes).
+    const glm::dvec3 to_eye = shading::to_eye(point, lighting);
+    double highlight;
+    if (shading::plain_power(power_)) {
+      highlight = std::pow(std::max(0.0, glm::dot(reflection, to_eye)), power_);
+    } else {
+      const shading::Angle angle = shading::angle_between(reflection, to_eye);
+      highlight = shading::power_near_one(angle.cos, angle.one_minus_cos(), power_);
+    }
+    return diffuse_ * std::max(0.0, n_dot_l) + specular_ * highlight;
   }
 
  private:

@@ -18,8 +18,22 @@ class Schlick final : public LightingModel {
   glm::dvec3 shade(const SurfacePoint& point, const ObjectSpaceLighting& lighting) const override {
     const glm::dvec3& normal = point.normal;
     const glm::dvec3& to_light = lighting.light_direction;
-    const double t = sat(glm::dot(shading::reflection(normal, to_light), shading::to_eye(point, lighting)));
-    return diffuse_ * sat(glm::dot(normal, to_light)) + specular_ * (t / (power_ - (power_ - 1.0) * t));
+    // t = sat(R·V); the denominator n - (n - 1) t = n (1 - t) + t with 1 - t from the
+    // angle between R and V, which does not cancel near the mirror direction.
+    // (Up to plain_power_limit the book's form: (n - 1) times t's rounding stays small.)
+    const glm::dvec3 reflection = shading::reflection(normal, to_light);
+    const glm::dvec3 to_eye = shading::to_eye(point, lighting);
+    double highlight;
+    if (shading::plain_power(power_)) {
+      const double t = sat(glm::dot(reflection, to_eye));
+      highlight = t / (power_ - (power_ - 1.0) * t);
+    } else {
+      const shading::Angle angle = shading::angle_between(reflection, to_eye);
+      const double t = sat(angle.cos);
+      const double one_minus_t = angle.cos > 0 ? angle.one_minus_cos() : 1.0;
+      highlight = t / (power_ * one_minus_t + t);
+    }
+    return diffuse_ * sat(glm::dot(normal, to_light)) + specular_ * highlight;
   }
 
  private:

@@ -20,8 +20,6 @@ namespace {
 
 using shading::sat;
 
-constexpr double min_tangent_length_squared = 1e-12;
-
 class WardAnisotropic final : public LightingModel {
  public:
   WardAnisotropic(const glm::dvec3& diffuse, const glm::dvec3& specular, const glm::dvec2& roughness)
@@ -38,17 +36,18 @@ class WardAnisotropic final : public LightingModel {
     const double n_dot_v = glm::dot(normal, to_eye);
     const glm::dvec3 tangent_in_plane = point.tangent - normal * glm::dot(normal, point.tangent);
     glm::dvec3 spec(0.0);
-    // A tangent parallel to the normal (or zero) leaves X undefined (NaN on a GPU).
-    // docs/models.md does not say; the reference drops the specular term there. The
-    // GLUT meshes' tangents are perpendicular to their normals, so renders never reach it.
-    if (n_dot_l > 0 && n_dot_v > 0 && glm::dot(tangent_in_plane, tangent_in_plane) >= min_tangent_length_squared) {
-      const glm::dvec3 x = glm::normalize(tangent_in_plane);
+    // X = normalize(T - N(N·T)) is undefined only when that projection is exactly zero
+    // (T = 0 or T parallel to N); docs/errata.md: the specular term is 0 there. A short or
+    // nearly parallel tangent still has a direction, normalised without under/overflow.
+    // The GLUT meshes' tangents are perpendicular to their normals.
+    if (n_dot_l > 0 && n_dot_v > 0 && tangent_in_plane != glm::dvec3(0.0)) {
+      const glm::dvec3 x = stable::normalize(tangent_in_plane);
       const glm::dvec3 y = glm::cross(normal, x);
       const glm::dvec3 h = shading::half_vector(to_light, to_eye);
       const double hx = glm::dot(h, x) / roughness_.x;
       const double hy = glm::dot(h, y) / roughness_.y;
       const double lobe = std::exp(-2.0 * (hx * hx + hy * hy) / (1.0 + glm::dot(normal, h)));
-      spec = specular_ * (normalisation_ / std::sqrt(n_dot_l * n_dot_v) * lobe);
+      spec = specular_ * (normalisation_ * shading::inverse_sqrt_product(n_dot_l, n_dot_v) * lobe);
     }
     return (diffuse_ + spec) * sat(n_dot_l);
   }

@@ -22,6 +22,7 @@ class WardIsotropic final : public LightingModel {
   WardIsotropic(const glm::dvec3& diffuse, const glm::dvec3& specular, double roughness)
       : diffuse_(diffuse),
         specular_(specular),
+        roughness_(roughness),
         roughness_squared_(roughness * roughness),
         normalisation_(1.0 / (4.0 * std::numbers::pi * roughness * roughness)) {}
 
@@ -33,9 +34,19 @@ class WardIsotropic final : public LightingModel {
     const double n_dot_v = glm::dot(normal, to_eye);
     glm::dvec3 spec(0.0);
     if (n_dot_l > 0 && n_dot_v > 0) {
-      const double n_dot_h = glm::dot(normal, shading::half_vector(to_light, to_eye));
-      const double tan_squared = (1.0 - n_dot_h * n_dot_h) / (n_dot_h * n_dot_h);
-      spec = specular_ * (std::exp(-tan_squared / roughness_squared_) * normalisation_ / std::sqrt(n_dot_l * n_dot_v));
+      // tan(gamma) = |N × H| / N·H from the unnormalised L + V: (1 - (N·H)²) cancels near
+      // the peak, where a sharp lobe magnifies the lost digits (docs/hard-cases.md). An
+      // unnormalised N (the unnormalised_normal counterfactual) keeps the literal form.
+      const glm::dvec3 sum = to_light + to_eye;
+      double exponent;  // tan²(gamma) / sigma²
+      if (shading::normal_length(normal) == 1.0) {
+        const double tan_over_sigma = stable::length(glm::cross(normal, sum)) / glm::dot(normal, sum) / roughness_;
+        exponent = tan_over_sigma * tan_over_sigma;
+      } else {
+        const double n_dot_h = glm::dot(normal, shading::half_vector(to_light, to_eye));
+        exponent = (1.0 - n_dot_h * n_dot_h) / (n_dot_h * n_dot_h) / roughness_squared_;
+      }
+      spec = specular_ * (std::exp(-exponent) * normalisation_ * shading::inverse_sqrt_product(n_dot_l, n_dot_v));
     }
     return (diffuse_ + spec) * sat(n_dot_l);
   }
@@ -43,6 +54,7 @@ class WardIsotropic final : public LightingModel {
  private:
   glm::dvec3 diffuse_;
   glm::dvec3 specular_;
+  double roughness_;
   double roughness_squared_;
   double normalisation_;
 };

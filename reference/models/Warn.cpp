@@ -22,8 +22,11 @@ class Warn final : public LightingModel {
   glm::dvec3 shade(const SurfacePoint& point, const ObjectSpaceLighting& lighting) const override {
     const shading::PointLight light = shading::point_light(point, lighting);
     const double cone = std::pow(sat(glm::dot(light.direction, lighting.light_direction)), exponent_);
+    // Times 1/d twice: d² under- or overflows for d < ~1e-154 or > ~1e154, where the
+    // colour itself is still a finite double.
+    const double inverse_distance = 1.0 / light.distance;
     return diffuse_ * light_color_ *
-           (cone * sat(glm::dot(point.normal, light.direction)) / (light.distance * light.distance));
+           (cone * sat(glm::dot(point.normal, light.direction)) * inverse_distance * inverse_distance);
   }
 
  private:

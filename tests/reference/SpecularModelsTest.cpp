@@ -52,11 +52,21 @@ TEST(BlinnPhong, HalfVectorBelowTheSurfaceGivesNoHighlight) {
 }
 
 TEST(BlinnPhong, OppositeLightAndEyeHaveNoHalfVectorAndNoHighlight) {
-  // L = -V: H = normalize(0) is undefined (docs/models.md is silent); the reference takes
+  // L = -V exactly: H = normalize(0) is undefined (docs/errata.md); the reference takes
   // N·H = 0, so only the diffuse term remains, and nothing is NaN.
   expect_colour_near(eval("blinn_phong", coloured, direction(30, 0), -direction(30, 0)),
                      std::cos(glm::radians(30.0)) * diffuse);
-  expect_colour_near(eval("blinn_phong", coloured, direction(90, 0), direction(90, 180)), glm::dvec3(0.0));
+  expect_colour_near(eval("blinn_phong", coloured, x_axis, -x_axis), glm::dvec3(0.0));
+}
+
+TEST(BlinnPhong, AShortButNonZeroSumStillDefinesTheHalfVector) {
+  // L and V 1e-9 rad above the horizon on opposite sides: |L + V| = 2e-9, H = N exactly,
+  // so the highlight is the whole specular colour (it used to be 0 below |L + V|² = 1e-12).
+  const glm::dvec3 L(1, 0, 1e-9), V(-1, 0, 1e-9);
+  expect_colour_near(eval("blinn_phong", coloured, L, V), 1e-9 * diffuse + specular);
+  // A sum 1.4e-9 long along (0, 1, 1): H at 45 degrees from N.
+  expect_colour_near(eval("blinn_phong", coloured, glm::dvec3(1, 1e-9, 1e-9), glm::dvec3(-1, 0, 0)),
+                     1e-9 * diffuse + std::pow(std::sqrt(0.5), 7) * specular);
 }
 
 // ---- schlick: D sat(N·L) + S t/(n - (n - 1) t), t = sat(R·V) -----------------------------
