@@ -1,6 +1,9 @@
 #include "compile/GlslVaryings.h"
 
 #include <cctype>
+#include <cerrno>
+#include <cstdlib>
+#include <limits>
 #include <map>
 #include <optional>
 #include <set>
@@ -11,6 +14,21 @@
 
 namespace shaderbed {
 namespace {
+
+// More locations than any GL implementation has (llvmpipe: 32); bounding literals by it
+// keeps the location arithmetic below far from int overflow.
+constexpr int kMaxLocations = 4096;
+
+// A number token as a non-negative int (decimal, 0x hex, 0 octal; a suffix such as u is
+// ignored), or nothing when it is not one (".0", out of range): std::stoi threw there.
+std::optional<int> int_literal(const std::string& text) {
+  errno = 0;
+  char* end = nullptr;
+  const long value = std::strtol(text.c_str(), &end, 0);
+  if (end == text.c_str() || errno == ERANGE || value < 0 || value > std::numeric_limits<int>::max())
+    return std::nullopt;
+  return int(value);
+}
 
 using cg::Token;
 using cg::TokenKind;
@@ -94,8 +112,12 @@ class Scanner {
     while (i < end) {
       if (t[i].is("layout") && i + 1 < end && t[i + 1].is("(")) {
         for (i += 2; i < end && !t[i].is(")"); ++i)
-          if (t[i].is("location") && i + 2 < end && t[i + 1].is("=") && t[i + 2].kind == TokenKind::number)
-            explicit_location = std::stoi(t[i + 2].text, nullptr, 0);
+          if (t[i].is("location") && i + 2 < end && t[i + 1].is("=") && t[i + 2].kind == TokenKind::number) {
+            explicit_location = int_literal(t[i + 2].text);
+            if (!explicit_location || *explicit_location >= kMaxLocations)
+              return std::unexpected(error_at(t[i + 2], "layout location '" + t[i + 2].text +
+                                                            "' is not an integer below " + std::to_string(kMaxLocations)));
+          }
         ++i;
         continue;
       }
@@ -134,7 +156,8 @@ class Scanner {
       const int length = array_length(t, i);
       if (length < 0)
         return std::unexpected(error_at(t[i], std::string(storage_) + " array '" + t[i].text +
-                                                  "' has no literal size; give it a layout(location)"));
+                                                  "' has no literal size (up to " + std::to_string(kMaxLocations) +
+                                                  "); give it a layout(location)"));
       out.push_back({t[i].text, per.value_or(1) * length, comma ? std::nullopt : explicit_location, begin, comma,
                      redeclare});
       while (i < end && !t[i].is(",")) ++i;   // to the next declarator
@@ -143,11 +166,12 @@ class Scanner {
     return {};
   }
 
-  // The literal size of `name[N]` at tokens[i] (1 when not an array, -1 when not literal).
+  // The literal size of `name[N]` at tokens[i] (1 when not an array, -1 when not literal or above kMaxLocations).
   static int array_length(const std::vector<Token>& t, size_t i) {
     if (i + 1 >= t.size() || !t[i + 1].is("[")) return 1;
-    if (i + 3 < t.size() && t[i + 2].kind == TokenKind::number && t[i + 3].is("]"))
-      return std::stoi(t[i + 2].text, nullptr, 0);
+    if (i + 3 < t.size() && t[i + 2].kind == TokenKind::number && t[i + 3].is("]")) {
+      if (auto n = int_literal(t[i + 2].text); n && *n <= kMaxLocations) return *n;
+    }
     return -1;
   }
 

@@ -446,6 +446,12 @@ Result<RunReport> parse_json(std::string_view text, const std::string& file) {
     }
     if (!err.line) err.message += fmt::format(" (at byte {})", e.byte);
     return std::unexpected(std::move(err));
+  } catch (const json::out_of_range& e) {
+    // out_of_range.406: a number beyond double's range ("1e999") is bad input too, not a crash.
+    const std::string what = e.what();
+    const size_t tag_end = what.find("] ");
+    return std::unexpected(Error{.message = "invalid JSON: " + (tag_end == std::string::npos ? what : what.substr(tag_end + 2)),
+                                 .file = file, .stage = "report"});
   }
   try {
     return read_report(j);

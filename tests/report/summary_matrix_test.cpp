@@ -79,7 +79,9 @@ TEST(SummaryMatrix, WorstErrorPerRow) {
                   .shape = "cube", .status = "pass", .metrics = {.max_abs = 0.03}, .interior_threshold = 0.1},
                  {.case_name = "warn", .variant = "pixel_lut", .language = "glsl", .backend = "gl", .path = "glsl",
                   .shape = "cone", .status = "pass", .metrics = {.max_abs = 0.01}, .interior_threshold = 0.0125}};
-  const MatrixRow& row = build_summary_matrix(lut).rows.at(0);
+  // Kept by value: a reference into the temporary's rows dangled (ASan, scripts/fuzz --ci).
+  const SummaryMatrix lut_matrix = build_summary_matrix(lut);
+  const MatrixRow& row = lut_matrix.rows.at(0);
   EXPECT_DOUBLE_EQ(row.worst_max_abs, 0.03);
   EXPECT_DOUBLE_EQ(row.worst_of_threshold, 0.8) << "the nearest to its own threshold, not the largest error";
   EXPECT_EQ(percent_of_threshold(0.8), "80%");
