@@ -16,7 +16,8 @@ void append(std::string& key, const std::string& text) {
 void append(std::string& key, const ShaderModule& module) {
   append(key, module.entry_point);
   std::string words(module.spirv.size() * sizeof(uint32_t), '\0');
-  std::memcpy(words.data(), module.spirv.data(), words.size());
+  // A native-GLSL module has no SPIR-V: memcpy from its null data is undefined even for 0 bytes.
+  if (!words.empty()) std::memcpy(words.data(), module.spirv.data(), words.size());
   append(key, words);
   // The reflection decides how attributes, uniforms and samplers are fed (attributes by
   // semantic, which stripped SPIR-V may not carry), so it is part of what was built.
