@@ -445,6 +445,19 @@ class GroupWork {
     return &*texture;
   }
 
+  // The texts of the case's other variants in `language`, read once per worker (every
+  // cell of the variant asks), for the unused-binding check.
+  const std::vector<std::string>& other_sources(const Case& c, const Variant& variant, Language language) {
+    const std::string key = c.name + "/" + variant.name + "/" + to_string(language);
+    auto [it, added] = other_sources_.try_emplace(key);
+    if (added)
+      for (const Variant& other : c.variants)
+        if (&other != &variant && other.shaders.contains(language))
+          for (const std::string* file : {&other.shaders.at(language).vertex, &other.shaders.at(language).fragment})
+            it->second.push_back(read_bounded_file(*file, "shader file", "compile").value_or(""));
+    return it->second;
+  }
+
   // Compiles, binds and draws one cell of `variant`; fills r's compile and draw parts.
   Result<Image> draw_cell(const Case& c, const Variant& variant, const PlannedCell& cell, const Mesh& mesh,
                           const Result<const Texture*>& lut, const TimingRequest& timing, CellResult& r,
@@ -474,14 +487,8 @@ class GroupWork {
     if (auto bound = uniforms.check_all_bound(*compiled.program); !bound) return std::unexpected(bound.error());
     // The table serves every variant in this language: only a run of them all can tell a
     // binding none of them declares (a --variant filter would compile the others just for it).
-    if (!variation.bindings && o_.variants.empty()) {
-      std::vector<std::string> others;
-      for (const Variant& other : c.variants)
-        if (&other != &variant && other.shaders.contains(cell.language))
-          for (const std::string* file : {&other.shaders.at(cell.language).vertex, &other.shaders.at(cell.language).fragment})
-            others.push_back(read_bounded_file(*file, "shader file", "compile").value_or(""));
-      r.warnings = uniforms.unused_bindings(*compiled.program, others);
-    }
+    if (!variation.bindings && o_.variants.empty())
+      r.warnings = uniforms.unused_bindings(*compiled.program, other_sources(c, variant, cell.language));
     CaseTextures textures(table, c.textures.for_language(cell.language), *lut, c.path,
                           &compiled.program->sampler_settings);
     if (auto ok = textures.check(*compiled.program); !ok) return std::unexpected(ok.error());
@@ -575,6 +582,7 @@ class GroupWork {
   double area_ = 0;   // the current group's expected projected area, in pixels
   std::vector<PixelClass> classes_;   // the current group's reference, classified once for all its cells
   std::optional<Evidence> stored_evidence_;   // the current group's, against stored images
+  std::map<std::string, std::vector<std::string>> other_sources_;   // by case/variant/language
 };
 
 }  // namespace
