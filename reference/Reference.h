@@ -106,6 +106,12 @@ struct Perturbation {
 std::expected<Framebuffer, std::string> render(const Scene& scene, const std::string& model, Mode mode,
                                                const Params& params, const Perturbation& perturbation);
 
+class LightingModel;
+
+// render() with a model the caller built (a lighting computed outside the registry, e.g.
+// an SH case's per-vertex radiance): no scene light or ambient term is added.
+std::expected<Framebuffer, std::string> render(const Scene& scene, const LightingModel& model, Mode mode);
+
 // ---- One configuration at a time (`shaderbed eval`) -------------------------------------
 
 // docs/models.md's defaults (the book's values) for every parameter the named model

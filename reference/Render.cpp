@@ -73,21 +73,17 @@ std::expected<Framebuffer, std::string> render(const Scene& scene, const std::st
   return render(scene, model_name, mode, params, Perturbation{});
 }
 
-std::expected<Framebuffer, std::string> render(const Scene& scene, const std::string& model_name, Mode mode,
-                                               const Params& params, const Perturbation& perturbation) {
-  auto built = make_model(model_name, params);
-  if (!built) return std::unexpected(built.error());
-  auto model = with_scene_lighting(std::move(*built), model_name, scene.light, scene.ambient);
-  if (!model) return std::unexpected(model.error());
+namespace {
+
+std::expected<Framebuffer, std::string> render_with(const Scene& scene, const LightingModel& model, LightUse light,
+                                                    Mode mode, const Perturbation& perturbation) {
   auto visibility = rasterise_scene(scene);
   if (!visibility) return std::unexpected(visibility.error());
 
   const Mesh& mesh = scene.mesh;
-  const ModelInfo* info = find_model(model_name);
-  const PointLighting lighting(to_object_space(scene.lights, scene.camera, scene.world), perturbation,
-                               info ? info->light : LightUse::none);
+  const PointLighting lighting(to_object_space(scene.lights, scene.camera, scene.world), perturbation, light);
   const std::vector<glm::dvec3> vertex_colours =
-      mode == Mode::per_vertex ? shade_vertices(mesh, **model, lighting) : std::vector<glm::dvec3>{};
+      mode == Mode::per_vertex ? shade_vertices(mesh, model, lighting) : std::vector<glm::dvec3>{};
 
   const size_t pixel_count = static_cast<size_t>(scene.width) * scene.height;
   Framebuffer image{scene.width, scene.height, std::vector<double>(pixel_count * 4, 0.0),
@@ -97,7 +93,7 @@ std::expected<Framebuffer, std::string> render(const Scene& scene, const std::st
     if (!sample.covered()) continue;
     const glm::dvec3 colour = mode == Mode::per_vertex
                                   ? interpolate(triangle_corners(mesh, sample), sample.weights, vertex_colours)
-                                  : shade_pixel(mesh, sample, **model, lighting, perturbation);
+                                  : shade_pixel(mesh, sample, model, lighting, perturbation);
     image.rgba[pixel * 4 + 0] = colour.r;
     image.rgba[pixel * 4 + 1] = colour.g;
     image.rgba[pixel * 4 + 2] = colour.b;
@@ -105,6 +101,22 @@ std::expected<Framebuffer, std::string> render(const Scene& scene, const std::st
     image.coverage[pixel] = 1;
   }
   return image;
+}
+
+}  // namespace
+
+std::expected<Framebuffer, std::string> render(const Scene& scene, const std::string& model_name, Mode mode,
+                                               const Params& params, const Perturbation& perturbation) {
+  auto built = make_model(model_name, params);
+  if (!built) return std::unexpected(built.error());
+  auto model = with_scene_lighting(std::move(*built), model_name, scene.light, scene.ambient);
+  if (!model) return std::unexpected(model.error());
+  const ModelInfo* info = find_model(model_name);
+  return render_with(scene, **model, info ? info->light : LightUse::none, mode, perturbation);
+}
+
+std::expected<Framebuffer, std::string> render(const Scene& scene, const LightingModel& model, Mode mode) {
+  return render_with(scene, model, LightUse::none, mode, Perturbation{});
 }
 
 }  // namespace reference

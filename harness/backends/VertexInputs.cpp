@@ -47,6 +47,16 @@ std::optional<AttributeStream> from_word(const std::string& w) {
   return std::nullopt;
 }
 
+std::optional<AttributeStream> from_extra(const std::string& word, const ExtraStreams* extra) {
+  if (!extra) return std::nullopt;
+  // "InVertex.sh_r0" reads the stream sh_r0: the struct's name is not part of it.
+  const std::string name = lower(word.substr(word.rfind('.') == std::string::npos ? 0 : word.rfind('.') + 1));
+  for (size_t k = 0; k < extra->names.size(); ++k)
+    if (lower(extra->names[k]) == name)
+      return AttributeStream{VertexAttribute::extra, uint32_t(16 * k), 4, 1};
+  return std::nullopt;
+}
+
 const std::string* mapped_word(const StageInput& input, const AttributeTable* map) {
   if (!map) return nullptr;
   for (const std::string& key : {input.name, "location " + std::to_string(input.location)})
@@ -61,12 +71,18 @@ std::string describe(const StageInput& input) {
 
 }  // namespace
 
-Result<AttributeStream> attribute_stream_for(const StageInput& input, const AttributeTable* map) {
+Result<AttributeStream> attribute_stream_for(const StageInput& input, const AttributeTable* map,
+                                             const ExtraStreams* extra) {
   if (const std::string* word = mapped_word(input, map)) {
     if (auto a = from_word(*word)) return *a;
+    if (auto a = from_extra(*word, extra)) return *a;
+    std::string streams;
+    if (extra)
+      for (const std::string& name : extra->names) streams += ", " + name;
     return fail("bind", "vertex input " + describe(input) + " is mapped to '" + *word +
-                            "', which is not a mesh attribute (position, normal, tangent, texcoord, color)");
+                            "', which is not a mesh attribute (position, normal, tangent, texcoord, color" + streams + ")");
   }
+  if (auto a = from_extra(input.name, extra)) return *a;
   if (!input.semantic.empty()) {
     std::string s = lower(input.semantic);
     if (s == "position0" || s == "sv_position") s = "position";   // POSITION is #defined to SV_Position
@@ -81,12 +97,13 @@ Result<AttributeStream> attribute_stream_for(const StageInput& input, const Attr
 }
 
 Result<std::vector<AttributeStream>> attribute_streams_for(const std::vector<StageInput>& inputs,
-                                                           const AttributeTable* map, Language language) {
+                                                           const AttributeTable* map, Language language,
+                                                           const ExtraStreams* extra) {
   std::vector<AttributeStream> streams;
   std::vector<std::string> unmatched;
   const StageInput* first = nullptr;
   for (const StageInput& input : inputs) {
-    auto stream = attribute_stream_for(input, map);
+    auto stream = attribute_stream_for(input, map, extra);
     if (stream) {
       streams.push_back(*stream);
     } else if (mapped_word(input, map)) {

@@ -13,20 +13,23 @@
 
 namespace shaderbed {
 
-enum class VertexAttribute { position, normal, tangent, texcoord, color };
+enum class VertexAttribute { position, normal, tangent, texcoord, color, extra };
 
 struct AttributeStream {
   VertexAttribute attribute;
-  uint32_t offset;       // bytes into shaderbed::Vertex
+  uint32_t offset;       // bytes into shaderbed::Vertex, or into a vertex's extra streams
   uint32_t components;   // floats stored in the mesh (2, 3 or 4); the driver fills w = 1
+  uint32_t binding = 0;  // 0: the Vertex buffer; 1: the mesh's extra streams
 };
 
-// The stream for one input; `map` may be null.
-Result<AttributeStream> attribute_stream_for(const StageInput& input, const AttributeTable* map = nullptr);
+// The stream for one input; `map` and `extra` (the mesh's extra streams) may be null.
+Result<AttributeStream> attribute_stream_for(const StageInput& input, const AttributeTable* map = nullptr,
+                                             const ExtraStreams* extra = nullptr);
 
 // One stream per input, in order. The error lists every input that matches no stream,
 // with a hint to map it in [attributes.<language>].
 Result<std::vector<AttributeStream>> attribute_streams_for(const std::vector<StageInput>& inputs,
-                                                           const AttributeTable* map, Language language);
+                                                           const AttributeTable* map, Language language,
+                                                           const ExtraStreams* extra = nullptr);
 
 }  // namespace shaderbed

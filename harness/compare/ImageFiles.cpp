@@ -12,6 +12,11 @@ Result<void> write_exr(const std::string& path, int width, int height, const std
 }
 
 Result<void> write_png(const std::string& path, const Image& image, float scale) {
+  const std::vector<uint8_t> bytes = png_pixels(image, scale);
+  return write_image_file(path, image.width, image.height, 3, PixelType::uint8, bytes.data());
+}
+
+std::vector<uint8_t> png_pixels(const Image& image, float scale) {
   // Opaque, with uncovered pixels in a dark slate so white surfaces stay visible.
   constexpr float kBackground[3] = {0.10f, 0.11f, 0.14f};
   std::vector<uint8_t> bytes(size_t(image.width) * image.height * 3);
@@ -25,7 +30,7 @@ Result<void> write_png(const std::string& path, const Image& image, float scale)
       o[c] = static_cast<uint8_t>(std::lround(v * 255.0f));
     }
   }
-  return write_image_file(path, image.width, image.height, 3, PixelType::uint8, bytes.data());
+  return bytes;
 }
 
 }  // namespace shaderbed

@@ -15,4 +15,8 @@ Result<void> write_exr(const std::string& path, int width, int height, const std
 // so they cannot pass for black; uncovered pixels in a dark background colour.
 Result<void> write_png(const std::string& path, const Image& image, float scale = 1.0f);
 
+// The 8-bit RGB pixels write_png writes (rows top to bottom), for showing an image on
+// screen exactly as its PNG looks.
+std::vector<uint8_t> png_pixels(const Image& image, float scale = 1.0f);
+
 }  // namespace shaderbed

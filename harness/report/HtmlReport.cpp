@@ -330,6 +330,12 @@ class Writer {
     }
     if (!r.lut_derivation.empty() || r.lut_bound != 0)
       row("LUT bound", fmt::format("{} &mdash; {}", sci(r.lut_bound), escape(r.lut_derivation)));
+    if (r.sh)
+      row("SH", fmt::format("{}; against the exact integral {} (the approximation's own {}{}), precompute {:.0f} ms, "
+                            "{:.0f} bytes per vertex",
+                            escape(r.sh->summary), sci(r.sh->render_vs_exact), sci(r.sh->truncation),
+                            r.sh->bound >= 0 ? ", bound " + sci(r.sh->bound) : std::string(), r.sh->precompute_ms,
+                            r.sh->bytes_per_vertex));
     if (!r.time_ms.empty()) {
       std::vector<std::string> t;
       for (const auto& [stage, ms] : r.time_ms)

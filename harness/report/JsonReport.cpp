@@ -78,6 +78,13 @@ ojson cell_json(const CellResult& r) {
                        {"silhouette_rel", json_number(r.silhouette_threshold_rel)},
                        {"reason", r.tolerance_reason},
                        {"lut", {{"bound", json_number(r.lut_bound)}, {"derivation", r.lut_derivation}}}};
+  if (r.sh)
+    cell["sh"] = {{"summary", r.sh->summary},
+                  {"render_vs_exact", json_number(r.sh->render_vs_exact)},
+                  {"truncation", json_number(r.sh->truncation)},
+                  {"bound", json_number(r.sh->bound)},
+                  {"precompute_ms", json_number(r.sh->precompute_ms)},
+                  {"bytes_per_vertex", json_number(r.sh->bytes_per_vertex)}};
   ojson times = ojson::object();
   for (const auto& [stage, ms] : r.time_ms) times[stage] = json_number(ms);
   cell["time_ms"] = std::move(times);
@@ -279,6 +286,17 @@ CellResult read_cell(const json& c, const std::string& p) {
       read(*lut, "bound", child(tp, "lut"), r.lut_bound);
       read(*lut, "derivation", child(tp, "lut"), r.lut_derivation);
     }
+  }
+  if (const json* s = object_at(c, "sh", p)) {   // SH cases only
+    const std::string sp = child(p, "sh");
+    CellResult::ShErrors e;
+    read(*s, "summary", sp, e.summary);
+    read(*s, "render_vs_exact", sp, e.render_vs_exact);
+    read(*s, "truncation", sp, e.truncation);
+    read(*s, "bound", sp, e.bound);
+    read(*s, "precompute_ms", sp, e.precompute_ms);
+    read(*s, "bytes_per_vertex", sp, e.bytes_per_vertex);
+    r.sh = e;
   }
   if (const json* t = object_at(c, "time_ms", p))
     for (const auto& [stage, ms] : t->items()) r.time_ms[stage] = to_double(ms, child(child(p, "time_ms"), stage));

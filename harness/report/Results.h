@@ -119,6 +119,18 @@ struct CellResult {
   std::vector<Explanation> explanations;
   double lut_bound = 0;             // LUT variants: the derived LUT error bound in the threshold
   std::string lut_derivation;
+  // SH cases (harness/prt): the cell is judged against the truncated SH in double (the
+  // shader's own error); against the exact lighting integral the error adds the
+  // approximation's, which is bounded separately. Absent for other cases.
+  struct ShErrors {
+    std::string summary;           // light, bands, transfer, rays per vertex
+    double render_vs_exact = -1;   // max |render - exact| over covered pixels (-1: no exact reference)
+    double truncation = -1;        // max |truncated SH in double - exact|: the approximation's own
+    double bound = -1;             // the case's [tolerance] approximation (-1: none)
+    double precompute_ms = 0;      // transfer, projection, CPCA (0 from the cache)
+    double bytes_per_vertex = 0;   // the per-vertex streams
+  };
+  std::optional<ShErrors> sh;
   // CPU wall times: compile, build, draw, readback, reference, compare, and io (writing the
   // cell's images, with --out only). "compile" is the
   // cell's program's (shared by every cell of that case/variant/language) and "reference"

@@ -22,6 +22,8 @@
 #include "run/ReferenceRender.h"
 #include "run/StoredImages.h"
 #include "core/BoundedFile.h"
+#include "core/CacheSettings.h"
+#include "prt/ShCase.h"
 #include "core/Fnv1a.h"
 #include "reference/Reference.h"
 #include "compare/Attribution.h"
@@ -67,6 +69,7 @@ struct Caches {
   std::map<std::string, Mesh> meshes;                        // shape/tessellation
   std::map<std::string, double> areas;                       // shape/tessellation: projected pixels
   std::map<std::string, Result<Texture>> luts;               // case/variant
+  std::map<std::string, Result<ShPrepared>> sh;              // SH case/shape/tessellation
 };
 
 class GroupWork {
@@ -82,7 +85,22 @@ class GroupWork {
     if (!caches_.meshes.contains(mesh_key))
       caches_.meshes.emplace(mesh_key, *(o_.mesh_slices > 0 ? make_shape(g.shape, o_.mesh_slices)
                                                               : make_shape(g.shape, c.tessellation)));
-    const Mesh& mesh = caches_.meshes.at(mesh_key);
+    // An SH case draws the shape with its per-vertex transfer streams (harness/prt).
+    const ShPrepared* prepared = nullptr;
+    Result<void> sh_ready{};
+    if (is_sh_model(c.model)) {
+      const std::string key = c.name + "|" + mesh_key;
+      if (!caches_.sh.contains(key)) {
+        const std::string root = cache_settings().root;
+        caches_.sh.emplace(key, prepare_sh(c, caches_.meshes.at(mesh_key), scene_,
+                                           root.empty() ? fs::path() : fs::path(root) / "sh"));
+      }
+      const Result<ShPrepared>& entry = caches_.sh.at(key);
+      if (entry) prepared = &*entry;
+      else sh_ready = std::unexpected(entry.error());
+    }
+    sh_values_ = prepared ? &prepared->uniforms : nullptr;
+    const Mesh& mesh = prepared ? prepared->mesh : caches_.meshes.at(mesh_key);
     const fs::path dir = o_.out_dir.empty() ? fs::path() : fs::path(o_.out_dir) / c.name / g.variant->name / g.shape;
 
     if (!caches_.areas.contains(mesh_key)) {
@@ -109,6 +127,18 @@ class GroupWork {
     Result<ReferenceImage> reference = fail("reference", "not drawn");
     if (stored) {
       source = {"images", "images in " + stored->dir, false, stored_.toolchain_notes.at(stored_dir)};
+    } else if (is_sh_model(c.model)) {
+      const LightingMode mode = o_.per_pixel_reference ? LightingMode::per_pixel : g.variant->mode;
+      if (prepared) reference = render_reference(mesh, scene_, c, mode, *prepared->truncated);
+      else reference = std::unexpected(sh_ready.error());
+      source = {"model", c.model + ": the truncated SH in double" +
+                             (mode == LightingMode::per_pixel ? std::string(" (per pixel)") : " (per vertex)")};
+      if (prepared && prepared->exact) {
+        auto exact = render_reference(mesh, scene_, c, mode, *prepared->exact);
+        sh_exact_ = exact ? std::optional<ReferenceImage>(std::move(*exact)) : std::nullopt;
+      } else {
+        sh_exact_.reset();
+      }
     } else if (!c.differential()) {
       const LightingMode mode = o_.per_pixel_reference ? LightingMode::per_pixel : g.variant->mode;
       reference = render_reference(mesh, scene_, c, mode);
@@ -133,6 +163,8 @@ class GroupWork {
         r = std::move(reference_draw->result);
         image = std::move(reference_draw->image);
         r.reference.is_reference = true;
+      } else if (!sh_ready) {   // the SH precompute failed: its error, not a binding error, in every cell
+        image = std::unexpected(sh_ready.error());
       } else {
         image = draw_cell(c, *g.variant, cell, mesh, lut, o_.timing, r);
       }
@@ -147,6 +179,7 @@ class GroupWork {
       } else if (judged) {
         judged = reference ? judge_cell(*image, *reference, classes_, dir, r)
                            : Result<void>(std::unexpected(reference.error()));
+        if (judged && prepared) judge_sh(c, *prepared, *image, *reference, r);
       }
       if (!judged) {
         r.status = judged.error().skipped ? "skipped" : "error";
@@ -483,7 +516,9 @@ class GroupWork {
     const BindingTable& table = variation.bindings              ? *variation.bindings
                                 : bindings == c.bindings.end() ? no_bindings
                                                                : bindings->second;
-    CaseUniforms uniforms(table, bindable_values(scene, c), c.path);
+    NamedValues values = bindable_values(scene, c);
+    if (sh_values_) values.insert(sh_values_->begin(), sh_values_->end());
+    CaseUniforms uniforms(table, std::move(values), c.path);
     if (auto bound = uniforms.check_all_bound(*compiled.program); !bound) return std::unexpected(bound.error());
     // The table serves every variant in this language: only a run of them all can tell a
     // binding none of them declares (a --variant filter would compile the others just for it).
@@ -575,10 +610,47 @@ class GroupWork {
     return {};
   }
 
+  // An SH cell against the exact integral: the render's error and the approximation's own
+  // (truncated SH in double against exact), over the pixels both cover; a case's
+  // `[tolerance] approximation` bounds the latter.
+  void judge_sh(const Case& c, const ShPrepared& prepared, const Image& image, const ReferenceImage& truncated,
+                CellResult& r) const {
+    CellResult::ShErrors e;
+    e.summary = prepared.summary;
+    e.precompute_ms = prepared.precompute_ms;
+    e.bytes_per_vertex = double(prepared.bytes_per_vertex);
+    if (sh_exact_) {
+      double render_error = 0, truncation = 0;
+      for (size_t p = 0; p < sh_exact_->coverage.size(); ++p) {
+        if (!sh_exact_->coverage[p] || !truncated.coverage[p] || !image.coverage[p]) continue;
+        for (int k = 0; k < 3; ++k) {
+          const double exact = sh_exact_->rgba[p * 4 + k];
+          render_error = std::max(render_error, std::abs(double(image.rgba[p * 4 + k]) - exact));
+          truncation = std::max(truncation, std::abs(truncated.rgba[p * 4 + k] - exact));
+        }
+      }
+      e.render_vs_exact = render_error;
+      e.truncation = truncation;
+    }
+    if (c.approximation) {
+      e.bound = c.approximation->max_abs;
+      if (e.truncation > e.bound && r.status == "pass") {
+        r.status = "fail";
+        r.attribution = "model/reference";
+        r.message = fmt::format("the SH approximation differs from the exact lighting integral by {:.3g} > {:.3g} "
+                                "([tolerance] approximation: {})",
+                                e.truncation, e.bound, c.approximation->reason);
+      }
+    }
+    r.sh = std::move(e);
+  }
+
   const RunOptions& o_;
   const SceneSetup& scene_;
   const StoredReferences& stored_;
   Caches caches_;
+  const NamedValues* sh_values_ = nullptr;          // the current SH group's light uniforms
+  std::optional<ReferenceImage> sh_exact_;          // the current SH group's exact reference
   double area_ = 0;   // the current group's expected projected area, in pixels
   std::vector<PixelClass> classes_;   // the current group's reference, classified once for all its cells
   std::optional<Evidence> stored_evidence_;   // the current group's, against stored images

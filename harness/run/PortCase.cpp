@@ -137,6 +137,7 @@ const char* semantic_of(VertexAttribute a) {
     case VertexAttribute::tangent: return "TANGENT";
     case VertexAttribute::texcoord: return "TEXCOORD0";
     case VertexAttribute::color: return "COLOR0";
+    case VertexAttribute::extra: return "BLENDWEIGHT0";   // a named extra stream: the case maps it
   }
   return "TEXCOORD0";
 }
@@ -148,6 +149,7 @@ const char* word_of(VertexAttribute a) {
     case VertexAttribute::tangent: return "tangent";
     case VertexAttribute::texcoord: return "texcoord";
     case VertexAttribute::color: return "color";
+    case VertexAttribute::extra: return "extra";
   }
   return "position";
 }

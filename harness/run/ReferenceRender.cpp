@@ -42,6 +42,14 @@ Result<ReferenceImage> render_reference(const Mesh& mesh, const SceneSetup& s, c
   return ReferenceImage{fb->width, fb->height, std::move(fb->rgba), std::move(fb->coverage)};
 }
 
+Result<ReferenceImage> render_reference(const Mesh& mesh, const SceneSetup& s, const Case& c, LightingMode mode,
+                                        const reference::LightingModel& model) {
+  auto fb = reference::render(reference_scene(mesh, s, c), model,
+                              mode == LightingMode::per_vertex ? reference::Mode::per_vertex : reference::Mode::per_pixel);
+  if (!fb) return std::unexpected(Error{.message = fb.error(), .file = c.path, .stage = "reference"});
+  return ReferenceImage{fb->width, fb->height, std::move(fb->rgba), std::move(fb->coverage)};
+}
+
 reference::Scene surface_scene(const Mesh& mesh, const SceneSetup& s, const Case& c) {
   reference::Scene scene = reference_scene(mesh, s, c);
   // The point-light models shade with the point light whatever the case says.

@@ -2,6 +2,7 @@
 // Adapter from the harness's scene to the independent CPU reference.
 #include "compare/ImageComparison.h"
 #include "compare/SurfaceSamples.h"
+#include "reference/LightingModel.h"
 #include "scene/CaseFile.h"
 #include "scene/Mesh.h"
 #include "scene/Scene.h"
@@ -14,6 +15,10 @@ struct Scene;
 namespace shaderbed {
 
 Result<ReferenceImage> render_reference(const Mesh& mesh, const SceneSetup& scene, const Case& c, LightingMode mode);
+
+// The same with a lighting the caller computed (an SH case's, harness/prt).
+Result<ReferenceImage> render_reference(const Mesh& mesh, const SceneSetup& scene, const Case& c, LightingMode mode,
+                                        const reference::LightingModel& model);
 
 // The same model re-rendered under a convention (light or eye negated, the normal not
 // renormalised): what a port that got that convention wrong would draw.

@@ -12,6 +12,7 @@
 #include <fmt/ranges.h>
 
 #include "backends/MesaEnvironment.h"
+#include "prt/ShCase.h"
 #include "compile/CompileCache.h"
 #include "core/BoundedFile.h"
 #include "core/CacheSettings.h"
@@ -39,12 +40,17 @@ Result<std::vector<Case>> select_cases(const RunOptions& o) {
   auto selected = load_selected_cases(o.cases_dir.empty() ? default_cases_dir() : o.cases_dir, o.cases);
   if (!selected) return std::unexpected(selected.error());
   std::vector<Case> cases = std::move(*selected);
+  // The SH models' parameters a case leaves out take docs/sh.md's defaults.
+  for (Case& c : cases)
+    if (is_sh_model(c.model))
+      for (auto& [name, value] : sh_default_params(c.model)) c.params.try_emplace(name, value);
   if (auto ok = apply_parameter_overrides(o.params, o.cases, cases); !ok) return std::unexpected(ok.error());
   // An unknown model is bad input in the case file, not an error in every one of its cells.
   for (const Case& c : cases)
-    if (!c.differential() && !reference::find_model(c.model)) {
+    if (!c.differential() && !reference::find_model(c.model) && !is_sh_model(c.model)) {
       std::string known;
       for (const std::string& name : reference::model_names()) known += (known.empty() ? "" : ", ") + name;
+      for (const std::string& name : sh_model_names()) known += ", " + name;
       return std::unexpected(Error{.message = "unknown model '" + c.model + "' (models: " + known + ")", .file = c.path,
                                    .line = c.model_line, .stage = "case"});
     }

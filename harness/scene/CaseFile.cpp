@@ -432,7 +432,7 @@ Result<Case> load_case(const std::string& path) {
 
   if (auto ok = check_keys(path, root,
                            {"model", "reference", "description", "tessellation", "params", "variants", "bindings",
-                            "attributes", "light", "ambient", "textures", "tolerance"},
+                            "attributes", "light", "ambient", "textures", "tolerance", "sh"},
                            "the case");
       !ok)
     return std::unexpected(ok.error());
@@ -564,6 +564,42 @@ Result<Case> load_case(const std::string& path) {
     c.ambient = glm::dvec3((*v)[0], (*v)[1], (*v)[2]);
   }
 
+  if (const toml::node* node = root.get("sh")) {
+    const toml::table* t = node->as_table();
+    if (!t) return std::unexpected(at(path, *node, "'sh' must be a table: [sh] transfer = \"shadowed\""));
+    if (auto ok = check_keys(path, *t, {"transfer", "light", "probe", "mapping", "ground"}, "[sh]"); !ok)
+      return std::unexpected(ok.error());
+    ShSetup s;
+    s.line = int(node->source().begin.line);
+    auto word = [&](const char* key, std::string& out, std::initializer_list<std::string_view> allowed) -> Result<void> {
+      const toml::node* n = t->get(key);
+      if (!n) return {};
+      auto v = n->value<std::string>();
+      std::string list;
+      for (std::string_view a : allowed) list += (list.empty() ? "\"" : ", \"") + std::string(a) + "\"";
+      if (!v || (allowed.size() && std::find(allowed.begin(), allowed.end(), *v) == allowed.end()))
+        return std::unexpected(at(path, *n, std::string("[sh] ") + key + " must be one of " + list));
+      out = *v;
+      return {};
+    };
+    for (auto ok : {word("transfer", s.transfer, {"unshadowed", "shadowed", "interreflected"}),
+                    word("light", s.light, {"directional", "cone", "sky", "probe"}),
+                    word("mapping", s.mapping, {"latlong", "angular"})})
+      if (!ok) return std::unexpected(ok.error());
+    if (const toml::node* probe = t->get("probe")) {
+      auto v = probe->value<std::string>();
+      if (!v || v->empty()) return std::unexpected(at(path, *probe, "[sh] probe must be the path of an .hdr or .exr file"));
+      s.probe = (shader_root / *v).lexically_normal().string();
+    }
+    if (s.light == "probe" && s.probe.empty()) return std::unexpected(at(path, *node, "[sh] light = \"probe\" needs probe = \"FILE\""));
+    if (const toml::node* ground = t->get("ground")) {
+      auto v = ground->value<bool>();
+      if (!v) return std::unexpected(at(path, *ground, "[sh] ground must be true or false"));
+      s.ground = *v;
+    }
+    c.sh = std::move(s);
+  }
+
   if (const toml::node* textures = root.get("textures")) {
     auto table = texture_table(path, shader_root, *textures);
     if (!table) return std::unexpected(table.error());
@@ -578,7 +614,7 @@ Result<Case> load_case(const std::string& path) {
     return checked_reference(path, root, std::move(c));
   }
   if (!tol) return std::unexpected(at(path, root, "missing [tolerance] (interior and silhouette, each with a reason)"));
-  if (auto ok = check_keys(path, *tol, {"interior", "silhouette", "lut"}, "[tolerance]"); !ok)
+  if (auto ok = check_keys(path, *tol, {"interior", "silhouette", "lut", "approximation"}, "[tolerance]"); !ok)
     return std::unexpected(ok.error());
   auto interior = tolerance(path, *tol, "interior");
   if (!interior) return std::unexpected(interior.error());
@@ -596,6 +632,11 @@ Result<Case> load_case(const std::string& path) {
     if (lt->get("max_abs") && (!std::isfinite(max_abs) || max_abs < 0))
       return std::unexpected(at(path, *lut, "tolerance 'lut': max_abs must be a finite number >= 0 (or left out)"));
     c.lut = Tolerance{max_abs, *reason};
+  }
+  if (tol->get("approximation")) {
+    auto approximation = tolerance(path, *tol, "approximation");
+    if (!approximation) return std::unexpected(approximation.error());
+    c.approximation = *approximation;
   }
   for (const Variant& v : c.variants)
     if (!v.lut.empty() && !c.lut)

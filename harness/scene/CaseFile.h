@@ -107,6 +107,18 @@ struct RenderReference {
   int line = 0;
 };
 
+// `[sh]`: the spherical-harmonic cases' choices that are not numbers (harness/prt,
+// docs/sh.md); their numbers (bands, grid, clusters, ...) are parameters, so --param and
+// sweep reach them.
+struct ShSetup {
+  std::string transfer = "shadowed";   // unshadowed | shadowed | interreflected
+  std::string light = "directional";   // directional | cone | sky | probe
+  std::string probe;                   // light = "probe": an .hdr or .exr file (absolute)
+  std::string mapping = "latlong";     // the probe's mapping: latlong | angular
+  bool ground = false;                 // a ground plane under the shape shadows and bounces
+  int line = 0;
+};
+
 struct Case {
   std::string name;          // file stem
   std::string path;
@@ -127,6 +139,10 @@ struct Case {
   // LUT variants are compared with the analytic reference; max_abs < 0 means "derive
   // it from the LUT size" (see lut/), the reason says how.
   std::optional<Tolerance> lut;
+  // SH cases: the bound on the approximation's own error (truncated SH against the exact
+  // integral), so a wrong projection fails even when the shader matches it.
+  std::optional<Tolerance> approximation;
+  std::optional<ShSetup> sh;
   Tessellation tessellation = Tessellation::low;
 
   // Judged against a render (of the original, or stored) instead of a model.

@@ -28,10 +28,22 @@ inline glm::vec4 vertex_colour_from_normal(const glm::vec3& n) { return {0.5f + 
 // "location N") -> attribute word: position, normal, tangent, texcoord (uv), color (colour).
 using AttributeTable = std::map<std::string, std::string>;
 
+// Per-vertex data beyond the fixed format, in a second vertex buffer: named 4-float
+// streams (the SH transfer coefficients, CPCA cluster offsets and weights, harness/prt).
+// Stream k of vertex v is values[(v * names.size() + k) * 4 ...]. A shader input reads one
+// when the case maps it by name in [attributes.<language>], or is named so itself.
+struct ExtraStreams {
+  std::vector<std::string> names;
+  std::vector<float> values;
+  uint32_t stride_floats() const { return uint32_t(4 * names.size()); }
+  bool empty() const { return names.empty(); }
+};
+
 struct Mesh {
   std::string name;
   std::vector<Vertex> vertices;
   std::vector<uint32_t> indices;   // triangle list
+  ExtraStreams extra;
   size_t triangle_count() const { return indices.size() / 3; }
 };
 

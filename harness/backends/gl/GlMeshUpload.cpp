@@ -32,7 +32,7 @@ Result<void> check_mesh(const Mesh& mesh) {
 Result<GlMesh> upload_mesh(const GlFunctions& gl, const Mesh& mesh, const std::vector<StageInput>& inputs,
                            const AttributeTable* attributes, Language language) {
   if (auto ok = check_mesh(mesh); !ok) return std::unexpected(ok.error());
-  auto streams = attribute_streams_for(inputs, attributes, language);
+  auto streams = attribute_streams_for(inputs, attributes, language, &mesh.extra);
   if (!streams) return std::unexpected(std::move(streams.error()).in_backend("gl"));
   GlMesh out;
   out.vertex_array = make_vertex_array(gl);
@@ -47,12 +47,22 @@ Result<GlMesh> upload_mesh(const GlFunctions& gl, const Mesh& mesh, const std::v
                 GL_STATIC_DRAW);
   out.index_count = GLsizei(mesh.indices.size());
 
+  if (std::ranges::any_of(*streams, [](const AttributeStream& s) { return s.binding == 1; })) {
+    if (mesh.extra.values.size() != mesh.vertices.size() * mesh.extra.stride_floats())
+      return std::unexpected(gl_error("mesh '" + mesh.name + "' has extra streams of the wrong size"));
+    out.extra = make_buffer(gl);
+    gl.BindBuffer(GL_ARRAY_BUFFER, out.extra.get());
+    gl.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh.extra.values.size() * sizeof(float)), mesh.extra.values.data(),
+                  GL_STATIC_DRAW);
+  }
   for (size_t i = 0; i < inputs.size(); ++i) {
     const AttributeStream& stream = (*streams)[i];
     gl.EnableVertexAttribArray(inputs[i].location);
+    gl.BindBuffer(GL_ARRAY_BUFFER, stream.binding == 1 ? out.extra.get() : out.vertices.get());
+    const GLsizei stride = stream.binding == 1 ? GLsizei(mesh.extra.stride_floats() * sizeof(float)) : sizeof(Vertex);
     // Fewer stored components than the shader reads are filled with (0, 0, 1) by GL:
     // a vec4 position gets w = 1.
-    gl.VertexAttribPointer(inputs[i].location, GLint(stream.components), GL_FLOAT, GL_FALSE, sizeof(Vertex),
+    gl.VertexAttribPointer(inputs[i].location, GLint(stream.components), GL_FLOAT, GL_FALSE, stride,
                            reinterpret_cast<const void*>(uintptr_t(stream.offset)));
   }
   if (auto ok = check_gl(gl, "uploading mesh '" + mesh.name + "'"); !ok) return std::unexpected(ok.error());

@@ -14,6 +14,7 @@ struct GlMesh {
   GlVertexArray vertex_array;  // bound, ready for glDrawElements
   GlBuffer vertices;
   GlBuffer indices;
+  GlBuffer extra;              // the mesh's extra streams, when an input reads them
   GLsizei index_count = 0;
 };
 

@@ -141,8 +141,8 @@ Result<GraphicsPipeline> GraphicsPipeline::create(const VulkanDevice& device, Vk
   };
   const VkPipelineVertexInputStateCreateInfo vertex_input_state{
       .sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO,
-      .vertexBindingDescriptionCount = 1,
-      .pVertexBindingDescriptions = &vertex_input.binding,
+      .vertexBindingDescriptionCount = uint32_t(vertex_input.bindings.size()),
+      .pVertexBindingDescriptions = vertex_input.bindings.data(),
       .vertexAttributeDescriptionCount = uint32_t(vertex_input.attributes.size()),
       .pVertexAttributeDescriptions = vertex_input.attributes.data()};
   const VkPipelineInputAssemblyStateCreateInfo input_assembly{

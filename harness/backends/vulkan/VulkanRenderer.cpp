@@ -48,6 +48,7 @@ struct DrawResources {
   const GraphicsPipeline* pipeline;   // owned by the renderer's pipeline cache
   HostBuffer vertices;
   HostBuffer indices;
+  std::optional<HostBuffer> extra;   // the mesh's extra streams, when an input reads them
 };
 
 // Deliberately leaks `resources`: the driver may still be executing commands that use
@@ -96,6 +97,10 @@ void record_pass(VkCommandBuffer commands, VkRenderPass render_pass, const DrawP
   const VkBuffer vertex_buffer = pass.resources.vertices.buffer();
   const VkDeviceSize zero = 0;
   vkCmdBindVertexBuffers(commands, 0, 1, &vertex_buffer, &zero);
+  if (pass.resources.extra) {
+    const VkBuffer extra_buffer = pass.resources.extra->buffer();
+    vkCmdBindVertexBuffers(commands, 1, 1, &extra_buffer, &zero);
+  }
   vkCmdBindIndexBuffer(commands, pass.resources.indices.buffer(), 0, VK_INDEX_TYPE_UINT32);
   vkCmdDrawIndexed(commands, pass.index_count, 1, 0, 0, 0);
   vkCmdEndRenderPass(commands);
@@ -177,7 +182,8 @@ Result<RenderOutput> VulkanRenderer::render(const DrawJob& job) {
   if (!packed) return std::unexpected(packed.error());
   auto resolved_textures = resolve_textures(*device_, *samplers, job.textures);
   if (!resolved_textures) return std::unexpected(resolved_textures.error());
-  auto vertex_input = vertex_input_layout(job.program.vertex.reflection, job.attributes, job.program.language);
+  auto vertex_input =
+      vertex_input_layout(job.program.vertex.reflection, job.attributes, job.program.language, &job.mesh.extra);
   if (!vertex_input) return std::unexpected(vertex_input.error());
 
   const VkExtent2D extent{uint32_t(job.width), uint32_t(job.height)};
@@ -201,10 +207,18 @@ Result<RenderOutput> VulkanRenderer::render(const DrawJob& job) {
   if (!vertices) return std::unexpected(vertices.error());
   auto indices = upload(*device_, std::as_bytes(std::span(job.mesh.indices)), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
   if (!indices) return std::unexpected(indices.error());
+  std::optional<HostBuffer> extra;
+  if (vertex_input->bindings.size() > 1) {
+    auto uploaded = upload(*device_, std::as_bytes(std::span(job.mesh.extra.values)), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    if (!uploaded) return std::unexpected(uploaded.error());
+    extra = std::move(*uploaded);
+  }
 
   RenderOutput output;
   RenderTarget& rt = **target;
-  const std::string key = program_key(job.program, ShaderPath::spirv, job.render_state);
+  // The extra streams' stride is part of the pipeline's vertex input.
+  const std::string key = program_key(job.program, ShaderPath::spirv, job.render_state) + "|extra " +
+                          std::to_string(job.mesh.extra.stride_floats());
   auto cached = pipelines_.find(key);
   output.timings.program_cached = cached != pipelines_.end();
   const auto build_start = Clock::now();
@@ -222,7 +236,7 @@ Result<RenderOutput> VulkanRenderer::render(const DrawJob& job) {
   // layouts are identically defined (same program), which is what Vulkan's layout
   // compatibility requires.
   DrawResources draw{std::move(*textures), std::move(*bindings), &cached->second, std::move(*vertices),
-                     std::move(*indices)};
+                     std::move(*indices), std::move(extra)};
   const auto submit = [&](const DrawPass& pass) -> Result<void> {
     auto done = device_->submit_and_wait([&](VkCommandBuffer commands) { record_pass(commands, render_pass_.get(), pass); });
     if (!done && device_->lost()) abandon(std::move(draw));

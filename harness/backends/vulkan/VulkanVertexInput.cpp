@@ -9,10 +9,10 @@
 namespace shaderbed::vulkan {
 
 Result<VertexInputLayout> vertex_input_layout(const Reflection& vertex_reflection, const AttributeTable* attributes,
-                                              Language language) {
+                                              Language language, const ExtraStreams* extra) {
   VertexInputLayout layout;
-  layout.binding = {.binding = 0, .stride = sizeof(Vertex), .inputRate = VK_VERTEX_INPUT_RATE_VERTEX};
-  auto streams = attribute_streams_for(vertex_reflection.inputs, attributes, language);
+  layout.bindings.push_back({.binding = 0, .stride = sizeof(Vertex), .inputRate = VK_VERTEX_INPUT_RATE_VERTEX});
+  auto streams = attribute_streams_for(vertex_reflection.inputs, attributes, language, extra);
   if (!streams) return std::unexpected(std::move(streams.error()));
   for (size_t i = 0; i < streams->size(); ++i) {
     const StageInput& input = vertex_reflection.inputs[i];
@@ -30,7 +30,12 @@ Result<VertexInputLayout> vertex_input_layout(const Reflection& vertex_reflectio
         return std::unexpected(backend_error("vertex input '" + input.name + "' maps to a mesh stream of " +
                                              std::to_string(stream.components) + " floats"));
     }
-    layout.attributes.push_back({.location = input.location, .binding = 0, .format = format, .offset = stream.offset});
+    if (stream.binding == 1 && layout.bindings.size() == 1)
+      layout.bindings.push_back({.binding = 1,
+                                 .stride = uint32_t(extra->stride_floats() * sizeof(float)),
+                                 .inputRate = VK_VERTEX_INPUT_RATE_VERTEX});
+    layout.attributes.push_back(
+        {.location = input.location, .binding = stream.binding, .format = format, .offset = stream.offset});
   }
   return layout;
 }

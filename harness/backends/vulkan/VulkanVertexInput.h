@@ -12,13 +12,14 @@
 namespace shaderbed::vulkan {
 
 struct VertexInputLayout {
-  VkVertexInputBindingDescription binding{};
+  // Binding 0: shaderbed::Vertex; binding 1 when an input reads the mesh's extra streams.
+  std::vector<VkVertexInputBindingDescription> bindings;
   std::vector<VkVertexInputAttributeDescription> attributes;
 };
 
 // Error naming every vertex shader input that is not one of the mesh's streams;
 // `attributes` is the case's [attributes.<language>] map (may be null).
 Result<VertexInputLayout> vertex_input_layout(const Reflection& vertex_reflection, const AttributeTable* attributes,
-                                              Language language);
+                                              Language language, const ExtraStreams* extra = nullptr);
 
 }  // namespace shaderbed::vulkan

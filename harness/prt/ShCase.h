@@ -1,0 +1,47 @@
+#pragma once
+// The spherical-harmonic cases (book Ch. 8 and 9, docs/sh.md). A case names one of the
+// SH models; this turns it into what the GPU is given (per-vertex streams, light
+// coefficients as uniforms) and into the two CPU references:
+//   sh             per-vertex transfer T as vertex inputs, L_o = Σ T_i L_i in the vertex shader
+//   sh_cpca        the book's SH_VS (Ch. 9.2.2): cluster offset and PCA weights per vertex,
+//                  the per-cluster dot products with the light (Eq. 9.1) as constants
+//   sh_irradiance  the 9-coefficient irradiance of the interpolated normal, per pixel
+// The verdict's reference is the truncated SH evaluated in double (the shader's own error,
+// judged with fp32 tolerances); the exact lighting integral (quadrature or a delta light,
+// with the same visibility) is the second reference, whose difference is the
+// approximation's error (reported, and bounded by `[tolerance] approximation`).
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/Error.h"
+#include "reference/LightingModel.h"
+#include "scene/CaseFile.h"
+#include "scene/Mesh.h"
+#include "scene/Scene.h"
+
+namespace shaderbed {
+
+bool is_sh_model(std::string_view model);
+const std::vector<std::string>& sh_model_names();
+
+// The numeric parameters an SH model reads, with their defaults (docs/sh.md).
+std::map<std::string, std::vector<double>> sh_default_params(std::string_view model);
+
+struct ShPrepared {
+  Mesh mesh;                 // the shape with the case's per-vertex streams
+  NamedValues uniforms;      // light coefficients, cluster constants
+  std::shared_ptr<const reference::LightingModel> truncated;   // SH in double
+  std::shared_ptr<const reference::LightingModel> exact;       // null: no exact integral (inter-reflected)
+  std::string summary;       // bands, samples, light, where the transfer came from
+  double precompute_ms = 0;  // transfer, projection and CPCA (0 when served from the cache)
+  size_t bytes_per_vertex = 0;   // what the per-vertex streams cost
+};
+
+// Everything an SH case's group needs for one shape. `cache_dir` "" = no transfer cache.
+Result<ShPrepared> prepare_sh(const Case& c, const Mesh& shape, const SceneSetup& scene,
+                              const std::filesystem::path& cache_dir);
+
+}  // namespace shaderbed

@@ -1,0 +1,284 @@
+#include "viewer/Viewer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <csignal>
+#include <deque>
+#include <filesystem>
+#include <memory>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "reference/ModelRegistry.h"
+#include "run/ParameterOverrides.h"
+#include "run/Runner.h"
+#include "viewer/FileWatcher.h"
+#include "viewer/FrameWorker.h"
+#include "viewer/Screenshot.h"
+#include "viewer/SplitView.h"
+#include "viewer/ViewerWindow.h"
+
+namespace shaderbed::viewer {
+namespace fs = std::filesystem;
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+
+constexpr double kPollSeconds = 0.2;   // how often the files are looked at (reload within a second)
+
+// The case the options name, checked as `run` checks it (names, parameters, model, size).
+Result<Case> load_view_case(const ViewerOptions& o) {
+  std::string name = o.case_name;
+  if (name.empty()) {
+    auto files = list_case_files(o.cases_dir);
+    if (!files) return std::unexpected(files.error());
+    if (files->empty()) return fail("options", "no case files in " + o.cases_dir);
+    const bool phong = std::ranges::any_of(*files, [](const std::string& f) { return fs::path(f).stem() == "phong"; });
+    name = phong ? "phong" : fs::path(files->front()).stem().string();
+  }
+  RunOptions run;
+  run.cases_dir = o.cases_dir;
+  run.cases = {name};
+  run.params = o.params;
+  run.size = o.size;
+  auto plan = plan_suite(run);
+  if (!plan) return std::unexpected(plan.error());
+  return std::move((*plan)->cases.front());
+}
+
+// The case file again, after it changed on disk, with the command line's --param.
+Result<Case> reload_case(const std::string& path, const std::vector<std::string>& params) {
+  auto loaded = load_case(path);
+  if (!loaded) return std::unexpected(loaded.error());
+  std::vector<Case> cases{std::move(*loaded)};
+  if (auto ok = apply_parameter_overrides(params, {}, cases); !ok) return std::unexpected(ok.error());
+  const Case& c = cases.front();
+  if (!c.differential() && !reference::find_model(c.model))
+    return std::unexpected(Error{.message = "unknown model '" + c.model + "'", .file = c.path, .line = c.model_line,
+                                 .stage = "case"});
+  return std::move(cases.front());
+}
+
+std::string verdict_text(const Frame& f) {
+  if (f.verdict == "pass" || f.verdict == "fail")
+    return fmt::format("{}, max {:.3g} ({:.2f} of tol)", f.verdict, f.max_error, f.tolerance_share);
+  if (f.verdict == "not judged" && f.reference)
+    return fmt::format("not judged ({}), max {:.3g}", f.detail.substr(0, f.detail.find(':')), f.max_error);
+  return f.verdict;
+}
+
+std::string title_of(const ViewerState& state, const Frame* good, const std::optional<Error>& problem) {
+  std::string title = "shaderbed view: " + cell_text(state);
+  if (problem) title += " | ERROR " + problem->to_string() + (good ? " (last good image shown)" : "");
+  else if (good) title += " | " + verdict_text(*good);
+  const std::string params = parameters_text(state);
+  if (!params.empty()) title += " | " + params;
+  if (good) title += fmt::format(" | draw {:.1f} ms, frame {:.0f} ms", good->draw_ms, good->frame_ms);
+  return title;
+}
+
+// What the window shows for the last good frame, in the current split setting.
+DisplayImage compose(const Frame& frame, bool split) {
+  const DisplayImage render = render_panel(*frame.render);
+  if (!split) return render;
+  return side_by_side({render,
+                       frame.reference ? reference_panel(*frame.reference) : empty_panel(render.width, render.height),
+                       frame.error ? error_panel(*frame.error, frame.interior_threshold)
+                                   : empty_panel(render.width, render.height)});
+}
+
+int content_width(int size, bool split) { return split ? 3 * size + 2 * kSplitGap : size; }
+
+}  // namespace
+
+int run_viewer(const ViewerOptions& o) {
+  // The compile probe's pipe: a child that crashed must be an error, not a SIGPIPE.
+  std::signal(SIGPIPE, SIG_IGN);
+  auto loaded = load_view_case(o);
+  if (!loaded) {
+    fmt::print(stderr, "shaderbed: {}\n", loaded.error().to_string());
+    return 2;
+  }
+  auto initial = initial_state(*loaded, o.choice);
+  if (!initial) {
+    fmt::print(stderr, "shaderbed: {}\n", initial.error().to_string());
+    return 2;
+  }
+  ViewerState state = std::move(*initial);
+  state.split = o.split;
+  auto current_case = std::make_shared<const Case>(std::move(*loaded));
+
+  auto window = ViewerWindow::open(content_width(o.size, state.split), o.size, title_of(state, nullptr, std::nullopt));
+  if (!window) {
+    if (window.error().stage == "display")
+      fmt::print(stderr,
+                 "shaderbed: view needs a display: {}. Without one, run it under a virtual X server: "
+                 "xvfb-run -a shaderbed view ...\n",
+                 window.error().message);
+    else
+      fmt::print(stderr, "shaderbed: {}\n", window.error().to_string());
+    return 2;
+  }
+  ViewerWindow& win = **window;
+
+  FrameWorker worker(o.probe_binary, [&win] { win.wake(); });
+  FileWatcher watcher;
+  watcher.watch(case_files(*current_case));
+
+  uint64_t generation = 0;
+  ViewerState requested = state;
+  bool sources_changed = false;
+  const auto request = [&] {
+    requested = state;
+    worker.submit({current_case, state, o.size, ++generation, std::exchange(sources_changed, false)});
+  };
+  request();
+
+  std::optional<Frame> good;            // the last frame that drew
+  std::optional<Error> problem;         // the last frame's error (compile, bind, draw) or the case file's
+  std::string reported_problem;         // printed on stderr once per distinct error
+  bool reload_pending = false;                    // the files changed; the frame that shows it is not in yet
+  auto reload_seen = Clock::now();
+  std::vector<std::string> reloaded_files;
+  std::deque<InputEvent> queue;
+  bool screenshot_pending = false;                // waiting for generation screenshot_at's frame to write one
+  uint64_t screenshot_at = 0;
+  int frames = 0;
+  std::vector<double> draw_times;
+  auto last_poll = Clock::now();
+  bool quit = false;
+  int status = 0;
+
+  const auto show = [&] {
+    win.set_title(title_of(state, good ? &*good : nullptr, problem));
+    if (good) win.show(compose(*good, state.split), problem.has_value());
+    else win.show({}, problem.has_value());
+  };
+  const auto report_problem = [&] {
+    if (!problem || problem->to_string() == reported_problem) return;
+    reported_problem = problem->to_string();
+    fmt::print(stderr, "shaderbed view: {}{}\n", reported_problem, good ? " (the last good image stays up)" : "");
+  };
+  const auto take_screenshot = [&](const std::string& stem) {
+    if (!good) {
+      fmt::print(stderr, "shaderbed view: no screenshot: nothing has been drawn{}\n",
+                 problem ? " (" + problem->to_string() + ")" : "");
+      return false;
+    }
+    auto written = write_screenshot(stem, *good, compose(*good, state.split), state.split);
+    if (!written) {
+      fmt::print(stderr, "shaderbed view: screenshot: {}\n", written.error().to_string());
+      return false;
+    }
+    fmt::print("screenshot: {}\n", fmt::join(*written, " "));
+    std::fflush(stdout);
+    return true;
+  };
+
+  uint64_t last_frame = 0;   // the generation of the last frame that arrived
+  while (!quit) {
+    win.wait(kPollSeconds);
+    for (InputEvent& e : win.take_events()) queue.push_back(e);
+    if (win.close_requested()) break;
+
+    // Input, in order; a screenshot holds the rest back until the frame of the state the
+    // keys before it made has arrived, so keys, then a screenshot, is deterministic.
+    const bool split_before = state.split;
+    bool touched = false;
+    while (!queue.empty() && !screenshot_pending && !quit) {
+      const InputEvent e = queue.front();
+      queue.pop_front();
+      touched = true;
+      if (e.kind == InputEvent::Kind::drag) drag_light(state, e.dx, e.dy, win.height());
+      else if (e.kind == InputEvent::Kind::scroll) scroll_zoom(state, e.steps);
+      else switch (handle_key(state, e.key)) {
+          case Effect::quit: quit = true; break;
+          case Effect::help: fmt::print("{}", key_table()), std::fflush(stdout); break;
+          case Effect::screenshot:
+            if (!state.same_image(requested)) request();
+            if (last_frame == generation) take_screenshot(next_screenshot_stem(o.out_dir, state));
+            else screenshot_pending = true, screenshot_at = generation;
+            break;
+          case Effect::redraw:
+          case Effect::none: break;
+        }
+    }
+    if (quit) break;
+
+    // The files: a changed case file is read again (an error in it keeps the last image).
+    if (ms_since(last_poll) >= kPollSeconds * 1000) {
+      last_poll = Clock::now();
+      const std::vector<std::string> changed = watcher.changed();
+      if (!changed.empty()) {
+        reload_seen = Clock::now();
+        reload_pending = true;
+        reloaded_files = changed;
+        auto reloaded = reload_case(current_case->path, o.params);
+        if (!reloaded) {
+          problem = reloaded.error();
+          report_problem();
+          fmt::print("reloaded {}: {}\n", fmt::join(changed, ", "), problem->to_string());
+          std::fflush(stdout);
+          reload_pending = false;
+          touched = true;
+        } else {
+          state = with_case(state, *reloaded);
+          current_case = std::make_shared<const Case>(std::move(*reloaded));
+          watcher.watch(case_files(*current_case));
+          sources_changed = true;
+          request();
+        }
+      }
+    }
+    if (!state.same_image(requested)) request();
+    if (state.split != split_before) win.resize(content_width(o.size, state.split), o.size);
+
+    std::optional<Frame> frame = worker.take();
+    if (!frame) {
+      if (touched) show();   // the split view, the selected parameter, the title
+      continue;
+    }
+    ++frames;
+    last_frame = frame->generation;
+    if (frame->problem) {
+      problem = frame->problem;
+    } else {
+      problem.reset();
+      reported_problem.clear();
+      draw_times.push_back(frame->draw_ms);
+      good = std::move(*frame);
+    }
+    report_problem();
+    if (reload_pending) {
+      fmt::print("reloaded {} in {:.0f} ms{}\n", fmt::join(reloaded_files, ", "), ms_since(reload_seen),
+                 problem ? ": " + problem->to_string() : "");
+      std::fflush(stdout);
+      reload_pending = false;
+    }
+    show();
+    if (screenshot_pending && last_frame >= screenshot_at) {
+      take_screenshot(next_screenshot_stem(o.out_dir, state));
+      screenshot_pending = false;
+    }
+    // --screenshot FILE --frames N: N frames, then the file, then exit.
+    if (!o.screenshot.empty() && !screenshot_pending && queue.empty() && last_frame == generation) {
+      if (frames < o.frames) {
+        request();   // the same image again: one more frame
+        continue;
+      }
+      status = take_screenshot(screenshot_stem(o.screenshot)) ? 0 : 1;
+      fmt::print("{}\n", title_of(state, good ? &*good : nullptr, problem));
+      if (!draw_times.empty()) {
+        std::vector<double> sorted = draw_times;
+        std::ranges::sort(sorted);
+        fmt::print("{} frames: draw median {:.2f} ms\n", frames, sorted[sorted.size() / 2]);
+      }
+      quit = true;
+    }
+  }
+  return status;
+}
+
+}  // namespace shaderbed::viewer
