@@ -22,6 +22,9 @@ namespace {
 
 using Params = std::map<std::string, std::vector<double>>;
 
+// float4 constants the SH_VS layout gives the clusters: c5..c255 of D3D9's 256.
+constexpr int kClusterRegisters = 251;
+
 double param(const Case& c, const std::string& name) { return c.params.at(name).at(0); }
 
 glm::dvec3 colour_param(const Case& c, const std::string& name) {
@@ -273,27 +276,37 @@ Result<ShPrepared> prepare_sh(const Case& c, const Mesh& shape, const SceneSetup
     if (auto ok = check_int(c, "clusters", 1, 4096); !ok) return std::unexpected(ok.error());
     if (auto ok = check_int(c, "pca_vectors", 4, 24); !ok) return std::unexpected(ok.error());
     const int pca_vectors = int(param(c, "pca_vectors"));
-    if (pca_vectors % 4 != 0) return fail_sh(fmt::format("pca_vectors = {} must be a multiple of 4 (float4 weights, as SH_VS)", pca_vectors));
+    if (pca_vectors % 4 != 0)
+      return fail_sh(fmt::format("pca_vectors = {} must be a multiple of 4 (float4 weights, as SH_VS)", pca_vectors));
     const int clusters = int(param(c, "clusters"));
-    // The constants live in a uniform buffer: 64 KiB on lavapipe and llvmpipe (D3D9 had 256 float4 registers).
-    const int limit = sh::max_clusters_for_constant_bytes(pca_vectors, 65536);
-    if (clusters > limit)
-      return fail_sh(fmt::format("{} clusters of {} PCA vectors need {} bytes of constants; a 64 KiB uniform buffer "
-                                 "holds {} clusters",
-                                 clusters, pca_vectors, size_t(clusters) * 16 * sh::cluster_registers(pca_vectors), limit));
+    // The constants live where the book's SH_VS has them: float4 registers c5..c255 of
+    // the 256 a D3D9 vertex shader has (c0-c3 the transform, c4 the layout), in the
+    // shaders' $Global block (docs/sh.md). A 64 KiB uniform buffer would hold
+    // max_clusters_for_constant_bytes(P, 65536) clusters; the book's 200 x 24 fits neither.
+    const int registers = sh::cluster_registers(pca_vectors);
+    if (clusters * registers + 6 > kClusterRegisters)
+      return fail_sh(fmt::format("{} clusters of {} PCA vectors need {} float4 constants; the SH_VS layout has {} "
+                                 "(c5..c255, as D3D9): at most {} clusters",
+                                 clusters, pca_vectors, clusters * registers, kClusterRegisters,
+                                 (kClusterRegisters - 6) / registers));
     auto compressed = sh::cpca(sh::cpca_input(transfer), int(3 * n),
                                sh::CpcaOptions{.clusters = clusters, .pca_vectors = pca_vectors});
     if (!compressed) return fail_sh(compressed.error());
     auto constants = sh::cluster_light_constants(*compressed, coefficients);
     if (!constants) return fail_sh(constants.error());
-    out.uniforms["sh_cluster_constants"] = std::vector<float>(constants->begin(), constants->end());
+    std::vector<float> registers_f(constants->begin(), constants->end());
+    registers_f.resize(size_t(kClusterRegisters) * 4, 0.0f);
+    out.uniforms["sh_cluster_constants"] = std::move(registers_f);
+    // The shader's loop reads six float4 weights (the book's 24); how many registers each
+    // colour's block has is the layout it needs to find G and B.
+    out.uniforms["sh_pca_layout"] = {float(registers / 3), 0.0f, 0.0f, 0.0f};
     out.mesh.extra.names.push_back("sh_cluster");
-    add_channel_streams(out.mesh.extra, "sh_weights", size_t(pca_vectors));
+    add_channel_streams(out.mesh.extra, "sh_weights", 24);
     const size_t stride = out.mesh.extra.stride_floats();
     out.mesh.extra.values.assign(vertex_count * stride, 0.0f);
     for (size_t v = 0; v < vertex_count; ++v) {
       // The book's ClusterID: the cluster's first float4 register in the constant array.
-      out.mesh.extra.values[v * stride] = float(compressed->cluster_of_vertex[v] * sh::cluster_registers(pca_vectors));
+      out.mesh.extra.values[v * stride] = float(compressed->cluster_of_vertex[v] * registers);
       for (int j = 0; j < pca_vectors; ++j)
         out.mesh.extra.values[v * stride + 4 + size_t(j)] = float(compressed->weights[v * size_t(pca_vectors) + size_t(j)]);
       truncated[v] = sh::shade_from_constants(*compressed, *constants, v);
