@@ -165,6 +165,29 @@ std::map<std::string, std::vector<double>> sh_default_params(std::string_view mo
   return p;
 }
 
+void apply_sh_defaults(Case& c) {
+  if (!is_sh_model(c.model)) return;
+  for (auto& [name, value] : sh_default_params(c.model)) c.params.try_emplace(name, value);
+}
+
+bool is_sh_approximation_parameter(std::string_view name) {
+  return name == "bands" || name == "grid" || name == "seed" || name == "bounces" || name == "clusters" ||
+         name == "pca_vectors";
+}
+
+std::expected<sh::TransferScene, std::string> sh_transfer_scene(const Mesh& shape, const glm::dvec3& albedo, bool ground) {
+  std::vector<sh::TransferMesh> meshes{transfer_mesh(shape, albedo)};
+  if (ground) {
+    double lowest = 0, extent = 0;
+    for (const Vertex& v : shape.vertices) {
+      lowest = std::min(lowest, double(v.position.y));
+      extent = std::max(extent, double(glm::length(v.position)));
+    }
+    meshes.push_back(sh::ground_plane(lowest - 0.01 * extent, 4 * extent, 16, glm::dvec3(0.8)));
+  }
+  return sh::TransferScene::create(std::move(meshes));
+}
+
 Result<ShPrepared> prepare_sh(const Case& c, const Mesh& shape, const SceneSetup& scene,
                               const std::filesystem::path& cache_dir) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -218,16 +241,7 @@ Result<ShPrepared> prepare_sh(const Case& c, const Mesh& shape, const SceneSetup
     if (auto ok = check_int(c, name, name == std::string("bounces") ? 0 : 1, name == std::string("grid") ? 1000 : 1 << 30);
         !ok)
       return std::unexpected(ok.error());
-  std::vector<sh::TransferMesh> meshes{transfer_mesh(shape, albedo)};
-  if (setup.ground) {
-    double lowest = 0, extent = 0;
-    for (const Vertex& v : shape.vertices) {
-      lowest = std::min(lowest, double(v.position.y));
-      extent = std::max(extent, double(glm::length(v.position)));
-    }
-    meshes.push_back(sh::ground_plane(lowest - 0.01 * extent, 4 * extent, 16, glm::dvec3(0.8)));
-  }
-  auto transfer_scene = sh::TransferScene::create(std::move(meshes));
+  auto transfer_scene = sh_transfer_scene(shape, albedo, setup.ground);
   if (!transfer_scene) return fail_sh(transfer_scene.error());
   sh::TransferOptions options;
   options.kind = setup.transfer == "unshadowed" ? sh::TransferKind::unshadowed

@@ -10,6 +10,7 @@
 // judged with fp32 tolerances); the exact lighting integral (quadrature or a delta light,
 // with the same visibility) is the second reference, whose difference is the
 // approximation's error (reported, and bounded by `[tolerance] approximation`).
+#include <expected>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -21,6 +22,7 @@
 #include "scene/CaseFile.h"
 #include "scene/Mesh.h"
 #include "scene/Scene.h"
+#include "sh/TransferScene.h"
 
 namespace shaderbed {
 
@@ -29,6 +31,13 @@ const std::vector<std::string>& sh_model_names();
 
 // The numeric parameters an SH model reads, with their defaults (docs/sh.md).
 std::map<std::string, std::vector<double>> sh_default_params(std::string_view model);
+
+// Gives an SH case the default of every parameter it leaves out.
+void apply_sh_defaults(Case& c);
+
+// Whether a parameter chooses how an SH case approximates the scene (bands, rays,
+// clusters, ...) rather than what the scene is (its light's rotation, the albedo).
+bool is_sh_approximation_parameter(std::string_view name);
 
 struct ShPrepared {
   Mesh mesh;                 // the shape with the case's per-vertex streams
@@ -39,6 +48,11 @@ struct ShPrepared {
   double precompute_ms = 0;  // transfer, projection and CPCA (0 when served from the cache)
   size_t bytes_per_vertex = 0;   // what the per-vertex streams cost
 };
+
+// The transfer scene an SH case casts its rays into: the shape as mesh 0, of diffuse
+// `albedo`, and with `ground` the plane it stands on as mesh 1 (albedo 0.8, 1% of the
+// shape's extent below its lowest point, 8 extents wide). Also `shaderbed sh transfer|eval`.
+std::expected<sh::TransferScene, std::string> sh_transfer_scene(const Mesh& shape, const glm::dvec3& albedo, bool ground);
 
 // Everything an SH case's group needs for one shape. `cache_dir` "" = no transfer cache.
 Result<ShPrepared> prepare_sh(const Case& c, const Mesh& shape, const SceneSetup& scene,

@@ -81,6 +81,7 @@ ojson cell_json(const CellResult& r) {
   if (r.sh)
     cell["sh"] = {{"summary", r.sh->summary},
                   {"render_vs_exact", json_number(r.sh->render_vs_exact)},
+                  {"rmse_vs_exact", json_number(r.sh->rmse_vs_exact)},
                   {"truncation", json_number(r.sh->truncation)},
                   {"bound", json_number(r.sh->bound)},
                   {"precompute_ms", json_number(r.sh->precompute_ms)},
@@ -292,6 +293,7 @@ CellResult read_cell(const json& c, const std::string& p) {
     CellResult::ShErrors e;
     read(*s, "summary", sp, e.summary);
     read(*s, "render_vs_exact", sp, e.render_vs_exact);
+    read(*s, "rmse_vs_exact", sp, e.rmse_vs_exact);
     read(*s, "truncation", sp, e.truncation);
     read(*s, "bound", sp, e.bound);
     read(*s, "precompute_ms", sp, e.precompute_ms);

@@ -125,6 +125,7 @@ struct CellResult {
   struct ShErrors {
     std::string summary;           // light, bands, transfer, rays per vertex
     double render_vs_exact = -1;   // max |render - exact| over covered pixels (-1: no exact reference)
+    double rmse_vs_exact = -1;     // its RMS over the same pixels and channels
     double truncation = -1;        // max |truncated SH in double - exact|: the approximation's own
     double bound = -1;             // the case's [tolerance] approximation (-1: none)
     double precompute_ms = 0;      // transfer, projection, CPCA (0 from the cache)

@@ -128,7 +128,10 @@ class GroupWork {
     if (stored) {
       source = {"images", "images in " + stored->dir, false, stored_.toolchain_notes.at(stored_dir)};
     } else if (is_sh_model(c.model)) {
-      const LightingMode mode = o_.per_pixel_reference ? LightingMode::per_pixel : g.variant->mode;
+      // Its own mode even for a per-pixel reference (sweep): a per-vertex SH technique has
+      // no per-pixel truncated SH, and its error against the exact integral is what a
+      // sweep charts.
+      const LightingMode mode = g.variant->mode;
       if (prepared) reference = render_reference(mesh, scene_, c, mode, *prepared->truncated);
       else reference = std::unexpected(sh_ready.error());
       source = {"model", c.model + ": the truncated SH in double" +
@@ -620,16 +623,21 @@ class GroupWork {
     e.precompute_ms = prepared.precompute_ms;
     e.bytes_per_vertex = double(prepared.bytes_per_vertex);
     if (sh_exact_) {
-      double render_error = 0, truncation = 0;
+      double render_error = 0, truncation = 0, squares = 0;
+      size_t count = 0;
       for (size_t p = 0; p < sh_exact_->coverage.size(); ++p) {
         if (!sh_exact_->coverage[p] || !truncated.coverage[p] || !image.coverage[p]) continue;
         for (int k = 0; k < 3; ++k) {
           const double exact = sh_exact_->rgba[p * 4 + k];
-          render_error = std::max(render_error, std::abs(double(image.rgba[p * 4 + k]) - exact));
+          const double d = std::abs(double(image.rgba[p * 4 + k]) - exact);
+          render_error = std::max(render_error, d);
+          squares += d * d;
+          ++count;
           truncation = std::max(truncation, std::abs(truncated.rgba[p * 4 + k] - exact));
         }
       }
       e.render_vs_exact = render_error;
+      e.rmse_vs_exact = count ? std::sqrt(squares / double(count)) : 0.0;
       e.truncation = truncation;
     }
     if (c.approximation) {

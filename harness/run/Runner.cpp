@@ -41,9 +41,7 @@ Result<std::vector<Case>> select_cases(const RunOptions& o) {
   if (!selected) return std::unexpected(selected.error());
   std::vector<Case> cases = std::move(*selected);
   // The SH models' parameters a case leaves out take docs/sh.md's defaults.
-  for (Case& c : cases)
-    if (is_sh_model(c.model))
-      for (auto& [name, value] : sh_default_params(c.model)) c.params.try_emplace(name, value);
+  for (Case& c : cases) apply_sh_defaults(c);
   if (auto ok = apply_parameter_overrides(o.params, o.cases, cases); !ok) return std::unexpected(ok.error());
   // An unknown model is bad input in the case file, not an error in every one of its cells.
   for (const Case& c : cases)

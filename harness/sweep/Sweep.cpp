@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "prt/ShCase.h"
 #include "run/Runner.h"
 #include "plot/ParetoFront.h"
 #include "scene/CaseSelection.h"
@@ -80,6 +81,12 @@ SweepPoint point_of(const CellResult& r, const std::map<std::string, double>& ax
   p.message = r.message;
   p.rmse = r.metrics.rmse;
   p.max_abs = r.metrics.max_abs;
+  if (r.sh && r.sh->render_vs_exact >= 0) {
+    p.rmse = r.sh->rmse_vs_exact;
+    p.max_abs = r.sh->render_vs_exact;
+    p.precompute_ms = r.sh->precompute_ms;
+    p.bytes_per_vertex = r.sh->bytes_per_vertex;
+  }
   p.time_ms = r.gpu.wall.median;
   p.time_low_ms = r.gpu.wall.low;
   p.time_high_ms = r.gpu.wall.high;
@@ -112,6 +119,7 @@ Result<SweepResult> run_sweep(const SweepOptions& o) {
   const std::string dir = o.cases_dir.empty() ? default_cases_dir() : o.cases_dir;
   auto cases = load_selected_cases(dir, {o.case_name});
   if (!cases) return std::unexpected(cases.error());
+  apply_sh_defaults(cases->front());
   const Case* c = &cases->front();
   if (auto ok = check_axes(*c, o.axes); !ok) return std::unexpected(ok.error());
   std::vector<std::string> variant_names;
@@ -175,7 +183,8 @@ Result<SweepResult> run_sweep(const SweepOptions& o) {
       std::vector<std::string> scene;
       for (size_t a = 0; a < o.axes.size(); ++a) {
         if (reads(v, o.axes[a])) values[o.axes[a].name] = step.values[a];
-        if (!is_implementation_axis(o.axes[a].name))
+        if (!is_implementation_axis(o.axes[a].name) &&
+            !(is_sh_model(c->model) && is_sh_approximation_parameter(o.axes[a].name)))
           scene.push_back(o.axes[a].name + "=" + format_axis_value(step.values[a]));
       }
       result.points.push_back(point_of(r, values, step.precision, precisions.size() > 1));

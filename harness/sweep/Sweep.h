@@ -53,6 +53,10 @@ struct SweepPoint {
   double driver_clock_ms = 0;                  // the driver's own clock (docs/timing.md)
   double build_ms = 0;                         // pipeline build + JIT, 0 when cached
   int instructions = 0, vertex_instructions = 0, fragment_instructions = 0;   // SPIR-V, as drawn
+  // SH cases: rmse and max_abs are against the exact lighting integral (the truncation and
+  // compression the axes trade), and what the approximation costs besides the draw.
+  double precompute_ms = 0;
+  double bytes_per_vertex = 0;
   std::string status, message;
   bool pareto = false;                         // on its scene's speed/error Pareto front
 };

@@ -28,15 +28,22 @@ void print_sweep_table(const SweepResult& sweep, std::FILE* out) {
   using markup::sci;
   const std::vector<std::string> headers = {"point", "variant", "precision", "lang", "backend", "path", "shape",
                                             "rmse", "max err", "draw ms [CI]", "driver ms", "instr", "pareto", "within tol."};
+  // SH cases: what the approximation costs besides the draw (the same for every band count).
+  const bool sh = std::any_of(sweep.points.begin(), sweep.points.end(),
+                              [](const SweepPoint& p) { return p.precompute_ms > 0 || p.bytes_per_vertex > 0; });
+  std::vector<std::string> header_row = headers;
+  if (sh) header_row.insert(header_row.end() - 2, {"precompute ms", "bytes/vertex"});
   std::vector<std::vector<std::string>> rows;
-  for (const SweepPoint& p : sweep.points)
+  for (const SweepPoint& p : sweep.points) {
     rows.push_back({axis_text(p), p.cell.at("variant"), p.cell.at("precision"), p.cell.at("language"),
                     p.cell.at("backend"), p.cell.at("path"), p.cell.at("shape"), sci(p.rmse), sci(p.max_abs),
                     fmt::format("{:.3f} [{:.3f}, {:.3f}]", p.time_ms, p.time_low_ms, p.time_high_ms),
                     fmt::format("{:.3f}", p.driver_clock_ms), std::to_string(p.instructions), p.pareto ? "*" : "",
                     p.status == "error" ? "ERROR" : p.status == "pass" ? "yes" : "no"});
-  std::vector<size_t> width(headers.size());
-  for (size_t c = 0; c < headers.size(); ++c) width[c] = headers[c].size();
+    if (sh) rows.back().insert(rows.back().end() - 2, {fmt::format("{:.1f}", p.precompute_ms), fmt::format("{:.0f}", p.bytes_per_vertex)});
+  }
+  std::vector<size_t> width(header_row.size());
+  for (size_t c = 0; c < header_row.size(); ++c) width[c] = header_row[c].size();
   for (const auto& row : rows)
     for (size_t c = 0; c < row.size(); ++c) width[c] = std::max(width[c], row[c].size());
   const auto print_row = [&](const std::vector<std::string>& row) {
@@ -45,16 +52,20 @@ void print_sweep_table(const SweepResult& sweep, std::FILE* out) {
     while (!line.empty() && line.back() == ' ') line.pop_back();
     fmt::print(out, "{}\n", line);
   };
-  print_row(headers);
+  print_row(header_row);
   for (const auto& row : rows) print_row(row);
   for (const SweepPoint& p : sweep.points)
     if (p.status == "error") fmt::print(out, "\nerror at {} {}: {}\n", axis_text(p), p.cell.at("variant"), p.message);
   fmt::print(out,
              "\n{} points of {} at {}x{}; draw time = wall median of {} timed draws after {} warm-up (CI: the "
-             "median's, order statistics); rmse and max err over interior pixels against the per-pixel model in double; instr = SPIR-V instructions "
+             "median's, order statistics); rmse and max err over interior pixels against {}; instr = SPIR-V instructions "
              "(vertex + fragment); * = on the Pareto front of time against rmse; within tol. = within the case's "
-             "tolerance against that reference\n",
-             sweep.points.size(), sweep.case_name, sweep.size, sweep.size, sweep.timing.runs, sweep.timing.warmup);
+             "tolerance{}\n",
+             sweep.points.size(), sweep.case_name, sweep.size, sweep.size, sweep.timing.runs, sweep.timing.warmup,
+             sh ? "the exact lighting integral (truncation, rays and compression; precompute ms is 0 when the transfer "
+                  "came from the cache)"
+                : "the per-pixel model in double",
+             sh ? " (the shader against the truncated SH, and the approximation within its bound)" : " against that reference");
 }
 
 std::string sweep_json(const SweepResult& sweep, const std::vector<SceneChart>& charts) {
@@ -79,6 +90,8 @@ std::string sweep_json(const SweepResult& sweep, const std::vector<SceneChart>& 
                       {"time_ci_ms", {json_number(p.time_low_ms), json_number(p.time_high_ms)}},
                       {"driver_clock_ms", json_number(p.driver_clock_ms)},
                       {"build_ms", json_number(p.build_ms)},
+                      {"precompute_ms", json_number(p.precompute_ms)},
+                      {"bytes_per_vertex", json_number(p.bytes_per_vertex)},
                       {"instructions", p.instructions},
                       {"instructions_by_stage", {{"vertex", p.vertex_instructions}, {"fragment", p.fragment_instructions}}},
                       {"status", p.status},

@@ -40,7 +40,7 @@ std::vector<KeyRow> make_rows() {
       {"Tab / Shift+Tab, ] / [", "select the next / previous parameter component", ours,
        {{k(NamedKey::tab), A::next_parameter}, {k(NamedKey::tab, true), A::previous_parameter},
         {c(']'), A::next_parameter}, {c('['), A::previous_parameter}}},
-      {"+ / -, Up / Down", "step it up / down (x1.1, /1.1; 0.05 from zero)", ours,
+      {"+ / -, Up / Down", "step it up / down (x1.1, /1.1; 0.05 from 0; LUT x2, /2)", ours,
        {{c('+'), A::parameter_up}, {c('='), A::parameter_up}, {c('-'), A::parameter_down},
         {k(NamedKey::up), A::parameter_up}, {k(NamedKey::down), A::parameter_down}}},
       {"e", "split view: render | reference | error heat map", ours, {{c('e'), A::toggle_split}}},

@@ -1,6 +1,6 @@
 #pragma once
-// Screenshots: what the window shows as PNG (the panels at their own size, one image
-// pixel per pixel) and the render, exact, as EXR; in split view the reference and the
+// Screenshots: what the window shows as PNG (read back from the window, one image pixel
+// per pixel) and the render, exact, as EXR; in split view the reference and the
 // error image too, each as PNG and EXR. Written whole (OpenImageIO, through the image
 // module), into folders created as needed.
 #include <string>

@@ -63,7 +63,7 @@ Result<Case> reload_case(const std::string& path, const std::vector<std::string>
 
 std::string verdict_text(const Frame& f) {
   if (f.verdict == "pass" || f.verdict == "fail")
-    return fmt::format("{}, max {:.3g} ({:.2f} of tol)", f.verdict, f.max_error, f.tolerance_share);
+    return fmt::format("{}, max {:.3g} ({:.3g} of tol)", f.verdict, f.max_error, f.tolerance_share);
   if (f.verdict == "not judged" && f.reference)
     return fmt::format("not judged ({}), max {:.3g}", f.detail.substr(0, f.detail.find(':')), f.max_error);
   return f.verdict;
@@ -137,7 +137,8 @@ int run_viewer(const ViewerOptions& o) {
   request();
 
   std::optional<Frame> good;            // the last frame that drew
-  std::optional<Error> problem;         // the last frame's error (compile, bind, draw) or the case file's
+  std::optional<Error> problem;         // the last frame's error (compile, bind, draw)
+  std::optional<Error> case_problem;    // the case file's, until it reads again
   std::string reported_problem;         // printed on stderr once per distinct error
   bool reload_pending = false;                    // the files changed; the frame that shows it is not in yet
   auto reload_seen = Clock::now();
@@ -151,14 +152,16 @@ int run_viewer(const ViewerOptions& o) {
   bool quit = false;
   int status = 0;
 
+  const auto current_problem = [&] { return case_problem ? case_problem : problem; };
   const auto show = [&] {
-    win.set_title(title_of(state, good ? &*good : nullptr, problem));
-    if (good) win.show(compose(*good, state.split), problem.has_value());
-    else win.show({}, problem.has_value());
+    win.set_title(title_of(state, good ? &*good : nullptr, current_problem()));
+    if (good) win.show(compose(*good, state.split), current_problem().has_value());
+    else win.show({}, current_problem().has_value());
   };
   const auto report_problem = [&] {
-    if (!problem || problem->to_string() == reported_problem) return;
-    reported_problem = problem->to_string();
+    const std::optional<Error> now = current_problem();
+    if (!now || now->to_string() == reported_problem) return;
+    reported_problem = now->to_string();
     fmt::print(stderr, "shaderbed view: {}{}\n", reported_problem, good ? " (the last good image stays up)" : "");
   };
   const auto take_screenshot = [&](const std::string& stem) {
@@ -167,7 +170,13 @@ int run_viewer(const ViewerOptions& o) {
                  problem ? " (" + problem->to_string() + ")" : "");
       return false;
     }
-    auto written = write_screenshot(stem, *good, compose(*good, state.split), state.split);
+    // The window as it shows the frame, read back, so the file is what is on screen; when
+    // the window is not at one image pixel per pixel (resized, or a resize still on its
+    // way), the content at that scale instead.
+    const DisplayImage composed = compose(*good, state.split);
+    DisplayImage shown = win.capture();
+    if (shown.width != composed.width || shown.height != composed.height) shown = composed;
+    auto written = write_screenshot(stem, *good, shown, state.split);
     if (!written) {
       fmt::print(stderr, "shaderbed view: screenshot: {}\n", written.error().to_string());
       return false;
@@ -217,13 +226,14 @@ int run_viewer(const ViewerOptions& o) {
         reloaded_files = changed;
         auto reloaded = reload_case(current_case->path, o.params);
         if (!reloaded) {
-          problem = reloaded.error();
+          case_problem = reloaded.error();
           report_problem();
-          fmt::print("reloaded {}: {}\n", fmt::join(changed, ", "), problem->to_string());
+          fmt::print("reloaded {}: {}\n", fmt::join(changed, ", "), case_problem->to_string());
           std::fflush(stdout);
           reload_pending = false;
           touched = true;
         } else {
+          case_problem.reset();
           state = with_case(state, *reloaded);
           current_case = std::make_shared<const Case>(std::move(*reloaded));
           watcher.watch(case_files(*current_case));
@@ -246,7 +256,7 @@ int run_viewer(const ViewerOptions& o) {
       problem = frame->problem;
     } else {
       problem.reset();
-      reported_problem.clear();
+      if (!case_problem) reported_problem.clear();
       draw_times.push_back(frame->draw_ms);
       good = std::move(*frame);
     }
@@ -269,12 +279,12 @@ int run_viewer(const ViewerOptions& o) {
         continue;
       }
       status = take_screenshot(screenshot_stem(o.screenshot)) ? 0 : 1;
-      fmt::print("{}\n", title_of(state, good ? &*good : nullptr, problem));
       if (!draw_times.empty()) {
         std::vector<double> sorted = draw_times;
         std::ranges::sort(sorted);
         fmt::print("{} frames: draw median {:.2f} ms\n", frames, sorted[sorted.size() / 2]);
       }
+      fmt::print("{}\n", title_of(state, good ? &*good : nullptr, current_problem()));
       quit = true;
     }
   }

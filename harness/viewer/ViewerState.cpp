@@ -53,7 +53,9 @@ std::vector<Component> components(const ViewerState& s) {
   return out;
 }
 
-double stepped(double v, bool up) {
+double stepped(const std::string& name, double v, bool up) {
+  // A lookup texture's size or row count is a whole number of texels: doubled or halved.
+  if (name.starts_with("lut_")) return up ? v * 2 : std::max(1.0, std::floor(v / 2));
   if (v == 0) return up ? kFromZero : -kFromZero;
   const bool grows = (v > 0) == up;
   return grows ? v * kParameterStep : v / kParameterStep;
@@ -247,8 +249,8 @@ Effect apply(ViewerState& s, ViewerAction action) {
       const auto all = components(s);
       if (all.empty()) return Effect::none;
       const Component& c = all[std::min(s.selected, all.size() - 1)];
-      double& v = s.parameters[c.parameter].values[c.index];
-      v = stepped(v, action == A::parameter_up);
+      Parameter& p = s.parameters[c.parameter];
+      p.values[c.index] = stepped(p.name, p.values[c.index], action == A::parameter_up);
       return Effect::redraw;
     }
     case A::toggle_split: s.split = !s.split; return Effect::redraw;

@@ -35,6 +35,9 @@ struct GlCalls {
   decltype(&glPixelZoom) pixel_zoom = nullptr;
   decltype(&glDrawPixels) draw_pixels = nullptr;
   PFNGLWINDOWPOS2IPROC window_pos = nullptr;
+  decltype(&glReadBuffer) read_buffer = nullptr;
+  decltype(&glReadPixels) read_pixels = nullptr;
+  decltype(&glFinish) finish = nullptr;
 
   bool load(const GlfwLibrary& glfw) {
     const auto get = [&](auto& fn, const char* name) {
@@ -43,7 +46,8 @@ struct GlCalls {
     };
     return get(viewport, "glViewport") && get(clear_color, "glClearColor") && get(clear, "glClear") &&
            get(pixel_store, "glPixelStorei") && get(pixel_zoom, "glPixelZoom") && get(draw_pixels, "glDrawPixels") &&
-           get(window_pos, "glWindowPos2i");
+           get(window_pos, "glWindowPos2i") && get(read_buffer, "glReadBuffer") && get(read_pixels, "glReadPixels") &&
+           get(finish, "glFinish");
   }
 };
 
@@ -59,6 +63,10 @@ std::optional<NamedKey> named_key(int key) {
     default: return std::nullopt;
   }
 }
+
+// The frame around the image: black, red while the shown image is not the current state's
+// (a compile error, say).
+constexpr int kFrame = 4;
 
 }  // namespace
 
@@ -89,16 +97,19 @@ struct ViewerWindow::Impl {
     return *static_cast<Impl*>(glfw.get_window_user_pointer(w));
   }
 
-  void draw() {
+  // Draws the image into the back buffer; with `capture`, reads back what was drawn (the
+  // image's rectangle, as the window shows it) before the buffers are swapped.
+  void draw(DisplayImage* capture = nullptr) {
     int fb_width = 0, fb_height = 0;
     glfw->get_framebuffer_size(window, &fb_width, &fb_height);
     gl.viewport(0, 0, fb_width, fb_height);
     if (alert) gl.clear_color(0.55f, 0.05f, 0.05f, 1.0f);
     else gl.clear_color(0.0f, 0.0f, 0.0f, 1.0f);
     gl.clear(GL_COLOR_BUFFER_BIT);
-    if (shown.width > 0 && shown.height > 0 && fb_width > 0 && fb_height > 0) {
-      // Scaled to fit, centred; whole pixels when it fits at 1:1 or more.
-      double zoom = std::min(double(fb_width) / shown.width, double(fb_height) / shown.height);
+    const int room_width = fb_width - 2 * kFrame, room_height = fb_height - 2 * kFrame;
+    if (shown.width > 0 && shown.height > 0 && room_width > 0 && room_height > 0) {
+      // Scaled to fit inside the frame, centred; whole pixels when it fits at 1:1 or more.
+      double zoom = std::min(double(room_width) / shown.width, double(room_height) / shown.height);
       if (zoom >= 1) zoom = std::floor(zoom);
       const int w = int(std::lround(shown.width * zoom)), h = int(std::lround(shown.height * zoom));
       const int x0 = (fb_width - w) / 2, y0 = (fb_height - h) / 2;
@@ -107,6 +118,16 @@ struct ViewerWindow::Impl {
       gl.window_pos(x0, y0 + h);
       gl.pixel_zoom(float(zoom), -float(zoom));
       gl.draw_pixels(shown.width, shown.height, GL_RGB, GL_UNSIGNED_BYTE, shown.rgb.data());
+      if (capture) {
+        gl.finish();
+        gl.read_buffer(GL_BACK);
+        gl.pixel_store(GL_PACK_ALIGNMENT, 1);
+        DisplayImage bottom_up{w, h, std::vector<uint8_t>(size_t(w) * h * 3)};
+        gl.read_pixels(x0, y0, w, h, GL_RGB, GL_UNSIGNED_BYTE, bottom_up.rgb.data());
+        *capture = {w, h, std::vector<uint8_t>(bottom_up.rgb.size())};
+        for (int y = 0; y < h; ++y)
+          std::copy_n(&bottom_up.rgb[size_t(h - 1 - y) * w * 3], size_t(w) * 3, &capture->rgb[size_t(y) * w * 3]);
+      }
     }
     glfw->swap_buffers(window);
   }
@@ -131,7 +152,7 @@ Result<std::unique_ptr<ViewerWindow>> ViewerWindow::open(int width, int height, 
   impl->glfw = &glfw;
   glfw.window_hint(GLFW_RESIZABLE, GLFW_TRUE);
   glfw.window_hint(GLFW_DOUBLEBUFFER, GLFW_TRUE);
-  impl->window = glfw.create_window(width, height, title.c_str(), nullptr, nullptr);
+  impl->window = glfw.create_window(width + 2 * kFrame, height + 2 * kFrame, title.c_str(), nullptr, nullptr);
   if (!impl->window) {
     const std::string why = take_error();
     glfw.terminate();
@@ -172,12 +193,20 @@ Result<std::unique_ptr<ViewerWindow>> ViewerWindow::open(int width, int height, 
 
 void ViewerWindow::set_title(const std::string& title) { impl_->glfw->set_window_title(impl_->window, title.c_str()); }
 
-void ViewerWindow::resize(int width, int height) { impl_->glfw->set_window_size(impl_->window, width, height); }
+void ViewerWindow::resize(int width, int height) {
+  impl_->glfw->set_window_size(impl_->window, width + 2 * kFrame, height + 2 * kFrame);
+}
 
 void ViewerWindow::show(const DisplayImage& image, bool alert) {
   impl_->shown = image;
   impl_->alert = alert;
   impl_->draw();
+}
+
+DisplayImage ViewerWindow::capture() {
+  DisplayImage image;
+  impl_->draw(&image);
+  return image;
 }
 
 void ViewerWindow::wait(double timeout_s) { impl_->glfw->wait_events_timeout(timeout_s); }

@@ -25,18 +25,22 @@ struct InputEvent {
 
 class ViewerWindow {
  public:
-  // An error with stage "display" when there is no display to open (no X server, DISPLAY
-  // unset): the caller says so and how to get one.
+  // A window for an image of width x height (plus a thin frame). An error with stage
+  // "display" when there is no display to open (no X server, DISPLAY unset): the caller
+  // says so and how to get one.
   static Result<std::unique_ptr<ViewerWindow>> open(int width, int height, const std::string& title);
   ~ViewerWindow();
   ViewerWindow(const ViewerWindow&) = delete;
   ViewerWindow& operator=(const ViewerWindow&) = delete;
 
   void set_title(const std::string& title);
-  // The window's size in screen pixels (the content is scaled to fit whatever it is).
+  // Room for an image of width x height (the content is scaled to fit whatever the size).
   void resize(int width, int height);
-  // Shows `image`, scaled to fit, on a background that is red when `alert`.
+  // Shows `image`, scaled to fit, in a frame that is red when `alert`.
   void show(const DisplayImage& image, bool alert);
+  // What the window shows of the image, read back from its GL context (at 1:1, the image's
+  // own pixels; larger when the window was made larger). Empty before anything is shown.
+  DisplayImage capture();
   // Waits up to `timeout_s` for input, a wake() or a redraw request, and queues the input.
   void wait(double timeout_s);
   // Ends a wait() from any thread.
