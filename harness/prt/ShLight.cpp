@@ -1,5 +1,7 @@
 #include "prt/ShLight.h"
 
+#include "prt/ProbeFile.h"
+
 #include <numbers>
 
 #include "sh/Basis.h"
@@ -112,9 +114,8 @@ Result<std::unique_ptr<ShLight>> make_sh_light(const ShSetup& setup, const Case&
     return std::make_unique<FunctionLight>([sky](const glm::dvec3& d) { return sky(d); },
                                            [sky](int bands) { return sky.coefficients(bands); }, turn);
   }
-  auto map = sh::EnvironmentMap::read(setup.probe,
-                                      setup.mapping == "angular" ? sh::MapLayout::angular : sh::MapLayout::latlong);
-  if (!map) return fail_light(map.error());
+  auto map = read_probe(setup.probe, setup.mapping == "angular" ? sh::MapLayout::angular : sh::MapLayout::latlong);
+  if (!map) return std::unexpected(Error(map.error()).in_file(c.path));
   auto shared = std::make_shared<const sh::EnvironmentMap>(std::move(*map));
   return std::make_unique<FunctionLight>(
       [shared](const glm::dvec3& d) { return shared->lookup(d); },

@@ -168,6 +168,15 @@ TEST(ViewerKeys, ParametersAreSelectedAndStepped) {
   s.selected = 3;
   press(s, '+');
   EXPECT_DOUBLE_EQ(s.parameters[1].values[0], 0.05);
+  // A LUT's size doubles and halves.
+  s.parameters.push_back({"lut_size", {64}});
+  s.selected = parameter_components(s).size() - 1;
+  press(s, '+');
+  EXPECT_EQ(s.parameters.back().values[0], 128);
+  press(s, '-');
+  press(s, '-');
+  EXPECT_EQ(s.parameters.back().values[0], 32);
+  s.parameters.pop_back();
   // r puts everything back.
   press(s, 'W');
   press(s, 'y');

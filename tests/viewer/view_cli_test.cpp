@@ -81,6 +81,15 @@ void expect_screenshot_is_the_runs_render(const std::string& language, const std
   EXPECT_GT(drawn_pixels(run), 1000u);
   EXPECT_LE(share_of_tolerance(view, run, cell_of(results, cell)), 1.0) << cell;
   EXPECT_EQ(differing_pixels(view, run), 0u) << "the same engine, the same scene: the same pixels (" << cell << ")";
+  // The PNG is read back from the window: what the screen shows is the run's PNG.
+  const auto png = [](const std::string& file) {
+    auto image = read_image_file(file);
+    return image ? *image : ImagePixels{};
+  };
+  const ImagePixels shown = png(dir / "view.png");
+  EXPECT_EQ(shown.width, kSize);
+  EXPECT_EQ(differing_pixels(shown, png(dir / ("run/phong/pixel/torus/" + language + "-" + backend + "-" + path + ".png"))),
+            0u);
 }
 
 TEST(View, ScreenshotIsTheRunsRenderOnVulkan) { expect_screenshot_is_the_runs_render("hlsl", "vulkan", "spirv"); }
@@ -164,11 +173,14 @@ TEST(View, LiveReloadOfAnEditedShaderAndAPlantedCompileError) {
   const std::string before = viewer.screenshot();
   ASSERT_FALSE(before.empty()) << viewer.errors();
 
-  // Half the light, with a comment no earlier run has compiled (no cache can answer).
+  // About half the light, by a factor no earlier run has compiled (no cache can answer).
+  const long stamp = long(std::chrono::system_clock::now().time_since_epoch().count() / 1000 % 1000000);
+  const double factor = 0.5 + stamp * 1e-8;
+  char literal[32];
+  std::snprintf(literal, sizeof literal, "%.8f", factor);
   const auto edited_at = std::chrono::steady_clock::now();
   edit(shader, "fragColor = vec4(diffuse + specular, 1.0);",
-       "fragColor = vec4(0.5 * (diffuse + specular), 1.0);  // edited " +
-           std::to_string(std::chrono::system_clock::now().time_since_epoch().count()));
+       "fragColor = vec4(" + std::string(literal) + " * (diffuse + specular), 1.0);");
   ASSERT_TRUE(viewer.wait_for_output("reloaded " + shader)) << viewer.output() << viewer.errors();
   const double reload_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - edited_at).count();
   RecordProperty("reload_seconds", std::to_string(reload_s));
@@ -182,7 +194,7 @@ TEST(View, LiveReloadOfAnEditedShaderAndAPlantedCompileError) {
   for (size_t i = 0; i < a.values.size(); i += 4)
     for (size_t c = 0; c < 3; ++c)
       if (a.values[i + 3] != 0 && a.values[i + c] > 0.01) {
-        EXPECT_NEAR(b.values[i + c], 0.5 * a.values[i + c], 1e-6 + 1e-6 * a.values[i + c]) << i;
+        EXPECT_NEAR(b.values[i + c], factor * a.values[i + c], 1e-6 + 1e-6 * a.values[i + c]) << i;
         ++lit;
       }
   EXPECT_GT(lit, 1000u);
@@ -201,6 +213,13 @@ TEST(View, LiveReloadOfAnEditedShaderAndAPlantedCompileError) {
 
   // Fixed again: drawn, and the error is gone from the title.
   edit(shader, "    not a declaration;\n", "");
+  ASSERT_TRUE(wait_until([&] { return viewer.title().find("ERROR") == std::string::npos; }, 10)) << viewer.title();
+
+  // The case file is watched too: an error in it is shown with its line until it is fixed.
+  edit(the_case, "power = 7.0", "power = \"seven\"");
+  ASSERT_TRUE(wait_until([&] { return viewer.title().find("ERROR " + the_case + ":8:") != std::string::npos; }, 10))
+      << viewer.title();
+  edit(the_case, "power = \"seven\"", "power = 7.0");
   ASSERT_TRUE(wait_until([&] { return viewer.title().find("ERROR") == std::string::npos; }, 10)) << viewer.title();
   EXPECT_EQ(viewer.quit(), 0) << viewer.errors();
 }
