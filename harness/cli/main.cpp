@@ -16,7 +16,8 @@ int main(int argc, char** argv) {
                                           shaderbed::add_init_command(app),
                                           shaderbed::add_port_command(app), shaderbed::add_cell_worker_command(app),
                                           shaderbed::add_bench_command(app), shaderbed::add_devices_command(app),
-                                          shaderbed::add_view_command(app), shaderbed::add_view_compile_command(app)};
+                                          shaderbed::add_view_command(app), shaderbed::add_view_compile_command(app),
+                                          shaderbed::add_sh_command(app)};
   shaderbed::add_cache_options(app);
   shaderbed::add_vulkan_device_option(app);
   shaderbed::add_version_flag(app);

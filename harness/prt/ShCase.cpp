@@ -9,6 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "prt/ShLight.h"
+#include "prt/ShSpecular.h"
 #include "sh/Basis.h"
 #include "sh/Cpca.h"
 #include "sh/Lights.h"
@@ -95,6 +96,26 @@ class NormalRadiance final : public reference::LightingModel {
   std::function<glm::dvec3(const glm::dvec3&)> of_normal_;
 };
 
+// sh_specular's references, per pixel: a diffuse reference of the interpolated normal (as
+// NormalRadiance) plus the specular lobe evaluated exactly at the reflection vector
+// R = 2(N·V)N - V of that normal and the interpolated position, V toward the eye: where
+// the GPU looks the lobe's cube map up.
+class SpecularRadiance final : public reference::LightingModel {
+ public:
+  SpecularRadiance(std::function<glm::dvec3(const glm::dvec3&)> diffuse, SpecularLobe lobe)
+      : diffuse_(std::move(diffuse)), lobe_(lobe) {}
+  glm::dvec3 shade(const reference::SurfacePoint& point, const reference::ObjectSpaceLighting& lighting) const override {
+    const glm::dvec3 n = glm::normalize(point.normal);
+    const glm::dvec3 v = glm::normalize(lighting.eye_position - point.position);
+    const glm::dvec3 r = 2.0 * glm::dot(n, v) * n - v;
+    return diffuse_(n) + glm::dvec3(lobe_(glm::normalize(r)));
+  }
+
+ private:
+  std::function<glm::dvec3(const glm::dvec3&)> diffuse_;
+  SpecularLobe lobe_;
+};
+
 sh::TransferMesh transfer_mesh(const Mesh& mesh, const glm::dvec3& albedo) {
   sh::TransferMesh t;
   t.positions.reserve(mesh.vertices.size());
@@ -139,7 +160,7 @@ double ms_since(std::chrono::steady_clock::time_point t0) {
 }  // namespace
 
 const std::vector<std::string>& sh_model_names() {
-  static const std::vector<std::string> names{"sh", "sh_cpca", "sh_irradiance"};
+  static const std::vector<std::string> names{"sh", "sh_cpca", "sh_irradiance", "sh_specular"};
   return names;
 }
 
@@ -156,11 +177,18 @@ std::map<std::string, std::vector<double>> sh_default_params(std::string_view mo
     p["clusters"] = {4};
     p["pca_vectors"] = {8};
   }
-  if (model == "sh_irradiance") {
+  if (model == "sh_irradiance" || model == "sh_specular") {
     p.erase("grid");
     p.erase("seed");
     p.erase("bounces");
     p["bands"] = {3};
+  }
+  if (model == "sh_specular") {
+    // The specular view k max(0, R·s)^p: a highlight about 12° wide at half height, half
+    // as bright as a facing albedo-1 point under the light, 64² texels per cube face.
+    p["specular_power"] = {32};
+    p["specular_scale"] = {0.5};
+    p["cube_size"] = {64};
   }
   return p;
 }
@@ -211,8 +239,9 @@ Result<ShPrepared> prepare_sh(const Case& c, const Mesh& shape, const SceneSetup
   out.mesh = shape;
   std::vector<glm::dvec3> coefficients = light.coefficients(bands);
 
-  if (c.model == "sh_irradiance") {
-    if (bands != 3) return fail_sh("sh_irradiance evaluates the 9-coefficient (3-band) irradiance: bands must be 3");
+  if (c.model == "sh_irradiance" || c.model == "sh_specular") {
+    if (bands != 3)
+      return fail_sh(c.model + " evaluates the 9-coefficient (3-band) irradiance: bands must be 3");
     // E(n) = Σ A_l L_lm y_lm(n) (Ramamoorthi and Hanrahan), times albedo/π: the shader
     // evaluates the 9 basis polynomials of its normal and sums.
     const std::vector<double> a = sh::band_limited_irradiance_weights(bands);
@@ -222,16 +251,41 @@ Result<ShPrepared> prepare_sh(const Case& c, const Mesh& shape, const SceneSetup
     std::vector<float> packed;
     for (const glm::dvec3& v : irradiance) packed.insert(packed.end(), {float(v.r), float(v.g), float(v.b), 0.0f});
     out.uniforms["sh_irradiance"] = packed;
-    out.truncated = std::make_shared<NormalRadiance>([irradiance, bands](const glm::dvec3& n) {
+    auto truncated = [irradiance, bands](const glm::dvec3& n) {
       std::vector<double> y(size_t(bands * bands));
       sh::basis_all(bands, sh::to_sh_frame(glm::normalize(n)), y);
       glm::dvec3 e(0.0);
       for (size_t i = 0; i < y.size(); ++i) e += irradiance[i] * y[i];
       return e;
-    });
+    };
     auto exact = light.exact_unshadowed(albedo);
-    out.exact = std::make_shared<NormalRadiance>(std::move(exact));
     out.summary = fmt::format("{} light, 3 bands (9 coefficients), irradiance per pixel", setup.light);
+    if (c.model == "sh_irradiance") {
+      out.truncated = std::make_shared<NormalRadiance>(std::move(truncated));
+      out.exact = std::make_shared<NormalRadiance>(std::move(exact));
+      out.precompute_ms = ms_since(t0);
+      return out;
+    }
+    // sh_specular (book Ch. 9.7): plus the specular view of the light, k max(0, ω·s)^p
+    // with s the light's direction turned by `rotation`, as a cube map the shader looks
+    // up at R (prt/ShSpecular.h). Both references add the lobe exactly at R: the texture's
+    // filtering is the render's only difference beyond fp32 (the case's tolerance).
+    if (auto ok = check_int(c, "cube_size", 2, 4096); !ok) return std::unexpected(ok.error());
+    SpecularLobe lobe{.power = param(c, "specular_power"), .scale = param(c, "specular_scale")};
+    if (!(lobe.power >= 1 && lobe.power <= 4096) || !(lobe.scale >= 0 && lobe.scale <= 1e6))
+      return fail_sh(fmt::format("specular_power = {} must be in 1..4096 and specular_scale = {} at least 0",
+                                 lobe.power, lobe.scale));
+    if (setup.light == "sky") lobe.axis = turn * sh::from_sh_frame(sh::SkyLight{}.sun_direction);
+    else if (setup.light == "directional" || setup.light == "cone") lobe.axis = turn * scene.lights.direction;
+    else return fail_sh("sh_specular's highlight is the light's direction: light = \"sky\", \"directional\" or \"cone\"");
+    lobe.axis = glm::normalize(lobe.axis);
+    const int cube_size = int(param(c, "cube_size"));
+    out.textures["sh_specular"] = std::make_shared<const Texture>(specular_cube(lobe, cube_size));
+    const CubeFilterBound filter = cube_filter_bound(lobe, cube_size);
+    out.truncated = std::make_shared<SpecularRadiance>(std::move(truncated), lobe);
+    out.exact = std::make_shared<SpecularRadiance>(std::move(exact), lobe);
+    out.summary += fmt::format(", plus {} max(0, R.s)^{} from a cube map at R (filter bound {:.3g}: {})", lobe.scale,
+                               lobe.power, filter.max_abs, filter.derivation);
     out.precompute_ms = ms_since(t0);
     return out;
   }

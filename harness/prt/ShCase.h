@@ -6,17 +6,21 @@
 //   sh_cpca        the book's SH_VS (Ch. 9.2.2): cluster offset and PCA weights per vertex,
 //                  the per-cluster dot products with the light (Eq. 9.1) as constants
 //   sh_irradiance  the 9-coefficient irradiance of the interpolated normal, per pixel
+//   sh_specular    sh_irradiance plus a specular cube map looked up at the reflection
+//                  vector (book Ch. 9.7), the cube map generated here (prt/ShSpecular.h)
 // The verdict's reference is the truncated SH evaluated in double (the shader's own error,
 // judged with fp32 tolerances); the exact lighting integral (quadrature or a delta light,
 // with the same visibility) is the second reference, whose difference is the
 // approximation's error (reported, and bounded by `[tolerance] approximation`).
 #include <expected>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "backends/Backend.h"
 #include "core/Error.h"
 #include "reference/LightingModel.h"
 #include "scene/CaseFile.h"
@@ -42,6 +46,9 @@ bool is_sh_approximation_parameter(std::string_view name);
 struct ShPrepared {
   Mesh mesh;                 // the shape with the case's per-vertex streams
   NamedValues uniforms;      // light coefficients, cluster constants
+  // Textures generated for the case, by the binding value that names them
+  // ([bindings.<language>] SAMPLER = "sh_specular"): sh_specular's cube map.
+  std::map<std::string, std::shared_ptr<const Texture>> textures;
   std::shared_ptr<const reference::LightingModel> truncated;   // SH in double
   std::shared_ptr<const reference::LightingModel> exact;       // null: no exact integral (inter-reflected)
   std::string summary;       // bands, samples, light, where the transfer came from

@@ -29,6 +29,7 @@ Command add_port_command(CLI::App& app);
 Command add_cell_worker_command(CLI::App& app);   // hidden: an isolated run's worker process
 Command add_view_command(CLI::App& app);
 Command add_view_compile_command(CLI::App& app);  // hidden: the viewer's compile probe (ViewCommand.cpp)
+Command add_sh_command(CLI::App& app);            // sh project|transfer|eval (ShCommand.cpp)
 
 // --cache-dir, --no-driver-cache, --no-compile-cache on the root app, accepted after any
 // subcommand too (CacheOptions.cpp). Call after adding the subcommands and before any
