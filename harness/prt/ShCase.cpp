@@ -200,7 +200,7 @@ void apply_sh_defaults(Case& c) {
 
 bool is_sh_approximation_parameter(std::string_view name) {
   return name == "bands" || name == "grid" || name == "seed" || name == "bounces" || name == "clusters" ||
-         name == "pca_vectors";
+         name == "pca_vectors" || name == "cube_size";
 }
 
 std::expected<sh::TransferScene, std::string> sh_transfer_scene(const Mesh& shape, const glm::dvec3& albedo, bool ground) {

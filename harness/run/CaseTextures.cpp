@@ -118,11 +118,16 @@ Result<const Texture*> CaseTextures::texture(const SamplerBinding& sampler) cons
                                             " = { file = \"...\" }; the variant's LUT: " + sampler.name +
                                             " = \"lut\" under [bindings.<language>])",
                                  .file = case_path_, .stage = "bind"});
-  if (bound != "lut" || lut_ == nullptr)
-    return std::unexpected(Error{.message = "sampler '" + sampler.name + "' is bound to '" + bound +
-                                            "', but this variant generates " + (lut_ ? "only \"lut\"" : "no lookup texture"),
-                                 .file = case_path_, .line = it->second.line, .stage = "bind"});
-  return lut_;
+  if (bound == "lut" && lut_ != nullptr) return lut_;
+  if (generated_)
+    if (auto made = generated_->find(bound); made != generated_->end()) return made->second.get();
+  std::string offered = lut_ ? "\"lut\"" : "";
+  if (generated_)
+    for (const auto& [name, texture] : *generated_) offered += (offered.empty() ? "\"" : ", \"") + name + "\"";
+  return std::unexpected(Error{.message = "sampler '" + sampler.name + "' is bound to '" + bound +
+                                          "', but this variant generates " +
+                                          (offered.empty() ? "no lookup texture" : "only " + offered),
+                               .file = case_path_, .line = it->second.line, .stage = "bind"});
 }
 
 SamplerSettings CaseTextures::own_settings(const std::string& name) const {

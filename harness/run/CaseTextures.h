@@ -1,7 +1,8 @@
 #pragma once
 // Binds a shader's samplers from a case. A sampler, or the Texture2D of an SM4 pair, is
 // bound by its name: to an image file under [textures] (run/TextureFiles.h), or to the
-// variant's generated LUT (`NAME = "lut"` under [bindings.<language>]). How it samples
+// variant's generated LUT (`NAME = "lut"` under [bindings.<language>]), or to a texture the
+// case's model generated, by its name (`NAME = "sh_specular"`). How it samples
 // comes, lowest first, from the LUT defaults (SamplerSettings{}), a DX9 effect's
 // sampler_state for it, the case's [textures] entry for the SamplerState it is sampled
 // with (t.Sample(s, uv); an entry with settings only), and the texture's own entry.
@@ -19,10 +20,12 @@ namespace shaderbed {
 class CaseTextures final : public TextureResolver {
  public:
   // `effect_states`: a DX9 effect's sampler_state settings by sampler name (may be null).
+  // `generated`: textures the case's model made, by the binding value naming them (may be null).
   CaseTextures(const BindingTable& bindings, std::map<std::string, TextureBinding> entries, const Texture* lut,
-               std::string case_path, const std::map<std::string, SamplerSettings>* effect_states = nullptr)
+               std::string case_path, const std::map<std::string, SamplerSettings>* effect_states = nullptr,
+               const std::map<std::string, std::shared_ptr<const Texture>>* generated = nullptr)
       : bindings_(bindings), entries_(std::move(entries)), lut_(lut), case_path_(std::move(case_path)),
-        effect_states_(effect_states) {}
+        effect_states_(effect_states), generated_(generated) {}
 
   // Before drawing: every [textures] entry names a sampler, texture or sampler state the
   // program declares; a file entry's cube-ness matches its sampler; every file loads.
@@ -52,6 +55,7 @@ class CaseTextures final : public TextureResolver {
   const Texture* lut_;
   std::string case_path_;
   const std::map<std::string, SamplerSettings>* effect_states_;
+  const std::map<std::string, std::shared_ptr<const Texture>>* generated_;
   std::map<std::string, std::shared_ptr<const Texture>> loaded_;   // by entry name
   std::map<std::string, std::vector<std::string>> states_of_texture_;   // SM4 Texture2D -> its SamplerStates
   std::map<std::string, std::vector<std::string>> textures_of_state_;   // SamplerState -> its Texture2Ds

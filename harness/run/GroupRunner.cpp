@@ -100,6 +100,7 @@ class GroupWork {
       else sh_ready = std::unexpected(entry.error());
     }
     sh_values_ = prepared ? &prepared->uniforms : nullptr;
+    sh_textures_ = prepared ? &prepared->textures : nullptr;
     const Mesh& mesh = prepared ? prepared->mesh : caches_.meshes.at(mesh_key);
     const fs::path dir = o_.out_dir.empty() ? fs::path() : fs::path(o_.out_dir) / c.name / g.variant->name / g.shape;
 
@@ -528,7 +529,7 @@ class GroupWork {
     if (!variation.bindings && o_.variants.empty())
       r.warnings = uniforms.unused_bindings(*compiled.program, other_sources(c, variant, cell.language));
     CaseTextures textures(table, c.textures.for_language(cell.language), *lut, c.path,
-                          &compiled.program->sampler_settings);
+                          &compiled.program->sampler_settings, sh_textures_);
     if (auto ok = textures.check(*compiled.program); !ok) return std::unexpected(ok.error());
     if (variation.flip_images && !textures.flip_images_vertically()) return fail("counterfactual", "no image to flip");
     // A model reads no texture; a render of the original reads the same ones.
@@ -658,6 +659,7 @@ class GroupWork {
   const StoredReferences& stored_;
   Caches caches_;
   const NamedValues* sh_values_ = nullptr;          // the current SH group's light uniforms
+  const std::map<std::string, std::shared_ptr<const Texture>>* sh_textures_ = nullptr;   // and its generated textures
   std::optional<ReferenceImage> sh_exact_;          // the current SH group's exact reference
   double area_ = 0;   // the current group's expected projected area, in pixels
   std::vector<PixelClass> classes_;   // the current group's reference, classified once for all its cells

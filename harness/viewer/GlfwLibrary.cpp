@@ -48,6 +48,14 @@ Result<const GlfwLibrary*> glfw_library() {
     symbol(library.set_scroll_callback, "glfwSetScrollCallback");
     symbol(library.set_window_refresh_callback, "glfwSetWindowRefreshCallback");
     symbol(library.get_proc_address, "glfwGetProcAddress");
+    symbol(library.default_window_hints, "glfwDefaultWindowHints");
+    symbol(library.get_window_attrib, "glfwGetWindowAttrib");
+    symbol(library.get_window_pos, "glfwGetWindowPos");
+    symbol(library.set_window_pos, "glfwSetWindowPos");
+    symbol(library.show_window, "glfwShowWindow");
+    symbol(library.vulkan_supported, "glfwVulkanSupported");
+    symbol(library.get_required_instance_extensions, "glfwGetRequiredInstanceExtensions");
+    symbol(library.create_window_surface, "glfwCreateWindowSurface");
   });
   if (!error.empty()) return fail("viewer", error);
   return &library;

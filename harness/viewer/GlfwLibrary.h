@@ -5,6 +5,8 @@
 // module. Only the functions the viewer calls are looked up.
 #include <string>
 
+// Vulkan's header first: GLFW declares its surface functions only when it has been seen.
+#include <vulkan/vulkan.h>
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
@@ -39,6 +41,15 @@ struct GlfwLibrary {
   decltype(&glfwSetScrollCallback) set_scroll_callback = nullptr;
   decltype(&glfwSetWindowRefreshCallback) set_window_refresh_callback = nullptr;
   decltype(&glfwGetProcAddress) get_proc_address = nullptr;
+  decltype(&glfwDefaultWindowHints) default_window_hints = nullptr;
+  decltype(&glfwGetWindowAttrib) get_window_attrib = nullptr;
+  decltype(&glfwGetWindowPos) get_window_pos = nullptr;
+  decltype(&glfwSetWindowPos) set_window_pos = nullptr;
+  decltype(&glfwShowWindow) show_window = nullptr;
+  // The Vulkan window (viewer/VulkanPresenter.h).
+  decltype(&glfwVulkanSupported) vulkan_supported = nullptr;
+  decltype(&glfwGetRequiredInstanceExtensions) get_required_instance_extensions = nullptr;
+  decltype(&glfwCreateWindowSurface) create_window_surface = nullptr;
 };
 
 // The library with every function found, or why not (libglfw3 missing, a symbol missing).

@@ -18,6 +18,7 @@
 #include "viewer/Screenshot.h"
 #include "viewer/SplitView.h"
 #include "viewer/ViewerWindow.h"
+#include "viewer/VulkanPresenter.h"
 
 namespace shaderbed::viewer {
 namespace fs = std::filesystem;
@@ -110,7 +111,12 @@ int run_viewer(const ViewerOptions& o) {
   state.split = o.split;
   auto current_case = std::make_shared<const Case>(std::move(*loaded));
 
-  auto window = ViewerWindow::open(content_width(o.size, state.split), o.size, title_of(state, nullptr, std::nullopt));
+  // Before any thread starts (it sets the environment): lavapipe presents, as it draws.
+  pin_presentation_driver();
+  // The frames are presented with the API of the backend that drew them: a Vulkan swapchain
+  // for vulkan, the window's GL context for gl (viewer/Presenter.h).
+  auto window = ViewerWindow::open(content_width(o.size, state.split), o.size, title_of(state, nullptr, std::nullopt),
+                                   present_api_of(state.backend));
   if (!window) {
     if (window.error().stage == "display")
       fmt::print(stderr,
@@ -122,6 +128,10 @@ int run_viewer(const ViewerOptions& o) {
     return 2;
   }
   ViewerWindow& win = **window;
+  const auto tell = [&win] {
+    for (const std::string& notice : win.take_notices()) fmt::print(stderr, "shaderbed view: {}\n", notice);
+  };
+  tell();
 
   FrameWorker worker(o.probe_binary, [&win] { win.wake(); });
   FileWatcher watcher;
@@ -154,9 +164,17 @@ int run_viewer(const ViewerOptions& o) {
 
   const auto current_problem = [&] { return case_problem ? case_problem : problem; };
   const auto show = [&] {
+    // The backend that drew the image on screen decides how it is presented (before the
+    // first frame, the cell's): B between vulkan and gl makes the window again.
+    if (auto remade = win.present_with(present_api_of(good ? good->state.backend : state.backend)); !remade) {
+      fmt::print(stderr, "shaderbed view: {}\n", remade.error().to_string());
+      quit = true, status = 2;
+      return;
+    }
     win.set_title(title_of(state, good ? &*good : nullptr, current_problem()));
     if (good) win.show(compose(*good, state.split), current_problem().has_value());
     else win.show({}, current_problem().has_value());
+    tell();
   };
   const auto report_problem = [&] {
     const std::optional<Error> now = current_problem();
@@ -175,7 +193,13 @@ int run_viewer(const ViewerOptions& o) {
     // way), the content at that scale instead.
     const DisplayImage composed = compose(*good, state.split);
     DisplayImage shown = win.capture();
-    if (shown.width != composed.width || shown.height != composed.height) shown = composed;
+    if (shown.width != composed.width || shown.height != composed.height) {
+      fmt::print(stderr, "shaderbed view: screenshot: {}: the PNG is the image as composed, not read back from the window\n",
+                 shown.width == 0 ? std::string("the window's pixels cannot be read back")
+                                  : fmt::format("the window shows the image at {}x{}, not {}x{}", shown.width,
+                                                shown.height, composed.width, composed.height));
+      shown = composed;
+    }
     auto written = write_screenshot(stem, *good, shown, state.split);
     if (!written) {
       fmt::print(stderr, "shaderbed view: screenshot: {}\n", written.error().to_string());
@@ -189,6 +213,7 @@ int run_viewer(const ViewerOptions& o) {
   uint64_t last_frame = 0;   // the generation of the last frame that arrived
   while (!quit) {
     win.wait(kPollSeconds);
+    tell();   // a frame the window's refresh could not present
     for (InputEvent& e : win.take_events()) queue.push_back(e);
     if (win.close_requested()) break;
 
@@ -268,6 +293,7 @@ int run_viewer(const ViewerOptions& o) {
       reload_pending = false;
     }
     show();
+    if (quit) break;
     if (screenshot_pending && last_frame >= screenshot_at) {
       take_screenshot(next_screenshot_stem(o.out_dir, state));
       screenshot_pending = false;

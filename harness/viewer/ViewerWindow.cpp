@@ -1,13 +1,11 @@
 #include "viewer/ViewerWindow.h"
 
-#include <GL/gl.h>
-#include <GL/glext.h>
-
-#include <algorithm>
-#include <cmath>
 #include <mutex>
+#include <optional>
 
+#include "viewer/GlPresenter.h"
 #include "viewer/GlfwLibrary.h"
+#include "viewer/VulkanPresenter.h"
 
 namespace shaderbed::viewer {
 namespace {
@@ -26,31 +24,6 @@ std::string take_error() {
   return std::exchange(last_glfw_error, std::string());
 }
 
-// The few GL 1.x calls the window makes, from the window's own context.
-struct GlCalls {
-  decltype(&glViewport) viewport = nullptr;
-  decltype(&glClearColor) clear_color = nullptr;
-  decltype(&glClear) clear = nullptr;
-  decltype(&glPixelStorei) pixel_store = nullptr;
-  decltype(&glPixelZoom) pixel_zoom = nullptr;
-  decltype(&glDrawPixels) draw_pixels = nullptr;
-  PFNGLWINDOWPOS2IPROC window_pos = nullptr;
-  decltype(&glReadBuffer) read_buffer = nullptr;
-  decltype(&glReadPixels) read_pixels = nullptr;
-  decltype(&glFinish) finish = nullptr;
-
-  bool load(const GlfwLibrary& glfw) {
-    const auto get = [&](auto& fn, const char* name) {
-      fn = reinterpret_cast<std::remove_reference_t<decltype(fn)>>(glfw.get_proc_address(name));
-      return fn != nullptr;
-    };
-    return get(viewport, "glViewport") && get(clear_color, "glClearColor") && get(clear, "glClear") &&
-           get(pixel_store, "glPixelStorei") && get(pixel_zoom, "glPixelZoom") && get(draw_pixels, "glDrawPixels") &&
-           get(window_pos, "glWindowPos2i") && get(read_buffer, "glReadBuffer") && get(read_pixels, "glReadPixels") &&
-           get(finish, "glFinish");
-  }
-};
-
 std::optional<NamedKey> named_key(int key) {
   switch (key) {
     case GLFW_KEY_TAB: return NamedKey::tab;
@@ -64,18 +37,19 @@ std::optional<NamedKey> named_key(int key) {
   }
 }
 
-// The frame around the image: black, red while the shown image is not the current state's
-// (a compile error, say).
-constexpr int kFrame = 4;
-
 }  // namespace
 
 struct ViewerWindow::Impl {
   const GlfwLibrary* glfw = nullptr;
   GLFWwindow* window = nullptr;
-  GlCalls gl;
+  std::unique_ptr<Presenter> presenter;
+  PresentApi api = PresentApi::gl;
+  bool vulkan_failed = false;   // Vulkan could not present here: GL from then on
+  std::string title;
   std::mutex events_mutex;
   std::vector<InputEvent> events;
+  std::vector<std::string> notices;
+  std::string present_problem;   // the last frame's, told once
   DisplayImage shown;
   bool alert = false;
   bool dragging = false;
@@ -97,39 +71,120 @@ struct ViewerWindow::Impl {
     return *static_cast<Impl*>(glfw.get_window_user_pointer(w));
   }
 
-  // Draws the image into the back buffer; with `capture`, reads back what was drawn (the
-  // image's rectangle, as the window shows it) before the buffers are swapped.
+  // Shows the image; with `capture`, reads back what was presented (the image's rectangle).
   void draw(DisplayImage* capture = nullptr) {
-    int fb_width = 0, fb_height = 0;
-    glfw->get_framebuffer_size(window, &fb_width, &fb_height);
-    gl.viewport(0, 0, fb_width, fb_height);
-    if (alert) gl.clear_color(0.55f, 0.05f, 0.05f, 1.0f);
-    else gl.clear_color(0.0f, 0.0f, 0.0f, 1.0f);
-    gl.clear(GL_COLOR_BUFFER_BIT);
-    const int room_width = fb_width - 2 * kFrame, room_height = fb_height - 2 * kFrame;
-    if (shown.width > 0 && shown.height > 0 && room_width > 0 && room_height > 0) {
-      // Scaled to fit inside the frame, centred; whole pixels when it fits at 1:1 or more.
-      double zoom = std::min(double(room_width) / shown.width, double(room_height) / shown.height);
-      if (zoom >= 1) zoom = std::floor(zoom);
-      const int w = int(std::lround(shown.width * zoom)), h = int(std::lround(shown.height * zoom));
-      const int x0 = (fb_width - w) / 2, y0 = (fb_height - h) / 2;
-      gl.pixel_store(GL_UNPACK_ALIGNMENT, 1);
-      // Rows come top first: start at the top edge and draw downwards.
-      gl.window_pos(x0, y0 + h);
-      gl.pixel_zoom(float(zoom), -float(zoom));
-      gl.draw_pixels(shown.width, shown.height, GL_RGB, GL_UNSIGNED_BYTE, shown.rgb.data());
-      if (capture) {
-        gl.finish();
-        gl.read_buffer(GL_BACK);
-        gl.pixel_store(GL_PACK_ALIGNMENT, 1);
-        DisplayImage bottom_up{w, h, std::vector<uint8_t>(size_t(w) * h * 3)};
-        gl.read_pixels(x0, y0, w, h, GL_RGB, GL_UNSIGNED_BYTE, bottom_up.rgb.data());
-        *capture = {w, h, std::vector<uint8_t>(bottom_up.rgb.size())};
-        for (int y = 0; y < h; ++y)
-          std::copy_n(&bottom_up.rgb[size_t(h - 1 - y) * w * 3], size_t(w) * 3, &capture->rgb[size_t(y) * w * 3]);
-      }
+    if (!presenter) return;
+    auto ok = presenter->present(shown, alert, capture);
+    if (ok) {
+      present_problem.clear();
+      return;
     }
-    glfw->swap_buffers(window);
+    const std::string why = ok.error().to_string();
+    if (api == PresentApi::vulkan) {
+      // The next present_with() makes a GL window (not here: this may be the window's own callback).
+      vulkan_failed = true;
+      notices.push_back("cannot present through the Vulkan swapchain: " + why + "; presenting through GL instead");
+      return;
+    }
+    if (why == present_problem) return;
+    present_problem = why;
+    notices.push_back("cannot present the frame through GL: " + why);
+  }
+
+  void destroy() {
+    presenter.reset();   // the surface and swapchain before their window
+    if (window) glfw->destroy_window(window);
+    window = nullptr;
+  }
+
+  // A window (width x height screen pixels, at `position` when given) presenting through `with`.
+  Result<void> make(PresentApi with, int width, int height, std::optional<std::pair<int, int>> position) {
+    glfw->default_window_hints();
+    glfw->window_hint(GLFW_RESIZABLE, GLFW_TRUE);
+    glfw->window_hint(GLFW_VISIBLE, GLFW_FALSE);   // shown once in place
+    if (with == PresentApi::vulkan) {
+      glfw->window_hint(GLFW_CLIENT_API, GLFW_NO_API);
+    } else {
+      glfw->window_hint(GLFW_CLIENT_API, GLFW_OPENGL_API);
+      glfw->window_hint(GLFW_DOUBLEBUFFER, GLFW_TRUE);
+    }
+    take_error();
+    window = glfw->create_window(width, height, title.c_str(), nullptr, nullptr);
+    if (!window)
+      return fail("display", std::string(with == PresentApi::vulkan ? "cannot open a window for Vulkan: "
+                                                                     : "cannot open a window with a GL context: ") +
+                                 take_error());
+    if (position) glfw->set_window_pos(window, position->first, position->second);
+    Result<std::unique_ptr<Presenter>> made = std::unique_ptr<Presenter>();
+    if (with == PresentApi::vulkan) {
+      auto vulkan = VulkanPresenter::create(*glfw, window);
+      if (vulkan) made = std::unique_ptr<Presenter>(std::move(*vulkan));
+      else made = std::unexpected(vulkan.error());
+    } else {
+      auto gl = GlPresenter::create(*glfw, window);
+      if (gl) made = std::unique_ptr<Presenter>(std::move(*gl));
+      else made = std::unexpected(gl.error());
+    }
+    if (!made) {
+      const std::string glfw_says = take_error();
+      Error e = made.error();
+      if (!glfw_says.empty()) e.message += " (GLFW: " + glfw_says + ")";
+      destroy();
+      return std::unexpected(std::move(e));
+    }
+    presenter = std::move(*made);
+    api = with;
+    dragging = false;
+    present_problem.clear();
+    glfw->set_window_user_pointer(window, this);
+    glfw->set_char_callback(window, [](GLFWwindow* w, unsigned int codepoint) {
+      Impl::of(w).push({.kind = InputEvent::Kind::key, .key = KeyPress::typed(char32_t(codepoint))});
+    });
+    glfw->set_key_callback(window, [](GLFWwindow* w, int key, int, int action, int mods) {
+      if (action == GLFW_RELEASE) return;
+      if (const auto named = named_key(key))
+        Impl::of(w).push({.kind = InputEvent::Kind::key, .key = KeyPress::key(*named, (mods & GLFW_MOD_SHIFT) != 0)});
+    });
+    glfw->set_mouse_button_callback(window, [](GLFWwindow* w, int button, int action, int) {
+      if (button == GLFW_MOUSE_BUTTON_LEFT) Impl::of(w).dragging = action == GLFW_PRESS;
+    });
+    glfw->set_cursor_pos_callback(window, [](GLFWwindow* w, double x, double y) {
+      Impl& self = Impl::of(w);
+      if (self.dragging) self.push({.kind = InputEvent::Kind::drag, .dx = x - self.last_x, .dy = y - self.last_y});
+      self.last_x = x, self.last_y = y;
+    });
+    glfw->set_scroll_callback(window, [](GLFWwindow* w, double, double y) {
+      Impl::of(w).push({.kind = InputEvent::Kind::scroll, .steps = y});
+    });
+    // Exposed or resized: show the same pixels again (no new frame is drawn for it).
+    glfw->set_window_refresh_callback(window, [](GLFWwindow* w) { Impl::of(w).draw(); });
+    glfw->show_window(window);
+    notices.push_back("presenting through " + presenter->description());
+    return {};
+  }
+
+  // make(), and when Vulkan cannot present here, GL instead (and Vulkan no more).
+  Result<void> make_or_fall_back(PresentApi with, int width, int height, std::optional<std::pair<int, int>> position) {
+    if (with == PresentApi::vulkan && vulkan_failed) with = PresentApi::gl;
+    auto made = make(with, width, height, position);
+    if (made || with == PresentApi::gl) return made;
+    vulkan_failed = true;
+    notices.push_back("cannot present through a Vulkan swapchain: " + made.error().to_string() +
+                      "; presenting through GL instead");
+    return make(PresentApi::gl, width, height, position);
+  }
+
+  // Made again for `with`, at the same size and place.
+  Result<bool> remake(PresentApi with) {
+    if (with == PresentApi::vulkan && vulkan_failed) with = PresentApi::gl;
+    if (window && with == api) return false;
+    int width = 0, height = 0, x = 0, y = 0;
+    glfw->get_window_size(window, &width, &height);
+    glfw->get_window_pos(window, &x, &y);
+    destroy();
+    if (auto made = make_or_fall_back(with, width, height, std::pair{x, y}); !made) return std::unexpected(made.error());
+    draw();
+    return true;
   }
 };
 
@@ -137,11 +192,12 @@ ViewerWindow::ViewerWindow(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) 
 
 ViewerWindow::~ViewerWindow() {
   if (!impl_) return;
-  if (impl_->window) impl_->glfw->destroy_window(impl_->window);
+  impl_->destroy();
   impl_->glfw->terminate();
 }
 
-Result<std::unique_ptr<ViewerWindow>> ViewerWindow::open(int width, int height, const std::string& title) {
+Result<std::unique_ptr<ViewerWindow>> ViewerWindow::open(int width, int height, const std::string& title,
+                                                         PresentApi api) {
   auto library = glfw_library();
   if (!library) return std::unexpected(library.error());
   const GlfwLibrary& glfw = **library;
@@ -150,48 +206,25 @@ Result<std::unique_ptr<ViewerWindow>> ViewerWindow::open(int width, int height, 
     return std::unexpected(Error{.message = "no display to open a window on (" + take_error() + ")", .stage = "display"});
   auto impl = std::make_unique<Impl>();
   impl->glfw = &glfw;
-  glfw.window_hint(GLFW_RESIZABLE, GLFW_TRUE);
-  glfw.window_hint(GLFW_DOUBLEBUFFER, GLFW_TRUE);
-  impl->window = glfw.create_window(width + 2 * kFrame, height + 2 * kFrame, title.c_str(), nullptr, nullptr);
-  if (!impl->window) {
-    const std::string why = take_error();
+  impl->title = title;
+  if (auto made = impl->make_or_fall_back(api, width + 2 * kFrame, height + 2 * kFrame, std::nullopt); !made) {
     glfw.terminate();
-    return fail("display", "cannot open a window with a GL context: " + why);
+    return std::unexpected(made.error());
   }
-  glfw.make_context_current(impl->window);
-  if (!impl->gl.load(glfw)) {
-    glfw.destroy_window(impl->window);
-    glfw.terminate();
-    return fail("display", "the window's GL context lacks glDrawPixels or glWindowPos2i (GL 1.4)");
-  }
-  glfw.swap_interval(0);   // frames are drawn on change only; never wait for a vertical blank
-  glfw.set_window_user_pointer(impl->window, impl.get());
-  glfw.set_char_callback(impl->window, [](GLFWwindow* w, unsigned int codepoint) {
-    Impl::of(w).push({.kind = InputEvent::Kind::key, .key = KeyPress::typed(char32_t(codepoint))});
-  });
-  glfw.set_key_callback(impl->window, [](GLFWwindow* w, int key, int, int action, int mods) {
-    if (action == GLFW_RELEASE) return;
-    if (const auto named = named_key(key))
-      Impl::of(w).push({.kind = InputEvent::Kind::key, .key = KeyPress::key(*named, (mods & GLFW_MOD_SHIFT) != 0)});
-  });
-  glfw.set_mouse_button_callback(impl->window, [](GLFWwindow* w, int button, int action, int) {
-    if (button == GLFW_MOUSE_BUTTON_LEFT) Impl::of(w).dragging = action == GLFW_PRESS;
-  });
-  glfw.set_cursor_pos_callback(impl->window, [](GLFWwindow* w, double x, double y) {
-    Impl& self = Impl::of(w);
-    if (self.dragging) self.push({.kind = InputEvent::Kind::drag, .dx = x - self.last_x, .dy = y - self.last_y});
-    self.last_x = x, self.last_y = y;
-  });
-  glfw.set_scroll_callback(impl->window, [](GLFWwindow* w, double, double y) {
-    Impl::of(w).push({.kind = InputEvent::Kind::scroll, .steps = y});
-  });
-  // Exposed or resized: show the same pixels again (no new frame is drawn for it).
-  glfw.set_window_refresh_callback(impl->window, [](GLFWwindow* w) { Impl::of(w).draw(); });
   impl->draw();
   return std::unique_ptr<ViewerWindow>(new ViewerWindow(std::move(impl)));
 }
 
-void ViewerWindow::set_title(const std::string& title) { impl_->glfw->set_window_title(impl_->window, title.c_str()); }
+Result<bool> ViewerWindow::present_with(PresentApi api) { return impl_->remake(api); }
+
+PresentApi ViewerWindow::api() const { return impl_->api; }
+
+std::vector<std::string> ViewerWindow::take_notices() { return std::exchange(impl_->notices, {}); }
+
+void ViewerWindow::set_title(const std::string& title) {
+  impl_->title = title;
+  impl_->glfw->set_window_title(impl_->window, title.c_str());
+}
 
 void ViewerWindow::resize(int width, int height) {
   impl_->glfw->set_window_size(impl_->window, width + 2 * kFrame, height + 2 * kFrame);

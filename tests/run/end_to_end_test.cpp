@@ -50,7 +50,8 @@ TEST(EndToEnd, DefaultSuitePassesOnEveryBackendAndGlPath) {
   // The whole library, with the LUT variants where the book has them.
   const std::set<std::string> library{"ambient",  "lambert",    "warn",     "phong",      "blinn_phong",
                                       "oren_nayar", "minnaert", "ward_iso", "ward_aniso", "schlick",
-                                      "cook_torrance", "point_attenuated", "spot", "sh", "sh_cpca", "sh_irradiance"};
+                                      "cook_torrance", "point_attenuated", "spot", "sh", "sh_cpca", "sh_irradiance",
+                                      "sh_specular"};
   EXPECT_EQ(cases, library);
   std::map<std::pair<std::string, std::string>, double> lut_error;   // largest over shapes and paths
   for (const CellResult& r : report->results)

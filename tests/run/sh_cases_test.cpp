@@ -25,7 +25,7 @@ json run_json(const std::string& args, const std::filesystem::path& file) {
 
 TEST(ShCases, EveryCellPassesAndReportsItsErrorAgainstTheExactIntegral) {
   shaderbed::test::TempDir dir;
-  const json report = run_json("--case sh,sh_cpca,sh_irradiance --shape sphere,torus", dir.path() / "sh.json");
+  const json report = run_json("--case sh,sh_cpca,sh_irradiance,sh_specular --shape sphere,torus", dir.path() / "sh.json");
   ASSERT_FALSE(report["results"].empty());
   for (const json& r : report["results"]) {
     EXPECT_EQ(r["status"], "pass") << r["id"] << ": " << r["message"];

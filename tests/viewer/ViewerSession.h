@@ -143,6 +143,19 @@ class ViewerSession {
   }
 
   bool has_window() const { return !window_.empty(); }
+  // The viewer makes its window again when it changes how it presents (B between vulkan
+  // and gl): waits until the one window with its title is a new one, and sends keys there.
+  bool follow_new_window(double timeout_s = 20) {
+    const std::string old = window_;
+    return wait_until([&] {
+      const auto [status, ids] = run_shell(display_.env() + "xdotool search --name '^shaderbed view'");
+      if (status != 0 || ids.find('\n') + 1 != ids.size()) return false;   // none yet, or the old one still there
+      const std::string id = ids.substr(0, ids.find('\n'));
+      if (id == old) return false;
+      window_ = id;
+      return true;
+    }, timeout_s);
+  }
   // xdotool key names: "c", "M", "greater", "plus", "Tab" ...
   void keys(const std::string& names) { run_shell(display_.env() + "xdotool key --window " + window_ + " " + names); }
   std::string title() const {

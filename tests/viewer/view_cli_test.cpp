@@ -1,5 +1,7 @@
 // `shaderbed view` end to end, on a virtual X server (Xvfb): it draws the pixels `run`
-// draws for the same cell on both backends; keys sent with xdotool change the shape, the
+// draws for the same cell on both backends and presents them with the backend's API (a
+// Vulkan swapchain on a window without a GL context, or the window's GL context), B
+// making the window again between the two; keys sent with xdotool change the shape, the
 // variant and the fill, and its screenshots change with them (each the run's render of the
 // new cell); an edited shader is drawn again within a second or so, a planted compile
 // error shows its file and line in the title and on stderr while the last good image
@@ -74,6 +76,19 @@ void expect_screenshot_is_the_runs_render(const std::string& language, const std
   }
   ASSERT_EQ(viewed.first, 0) << viewed.second;
   EXPECT_NE(viewed.second.find("3 frames"), std::string::npos) << viewed.second;
+  // Presented with the backend's API: the PNG below is read back from a swapchain image
+  // for vulkan (a window without a GL context), from the GL back buffer for gl.
+  const auto says = [&](const std::string& text) { return viewed.second.find(text) != std::string::npos; };
+  if (backend == "vulkan") {
+    EXPECT_TRUE(says("presenting through a Vulkan swapchain (lavapipe, VK_KHR_")) << viewed.second;
+    EXPECT_TRUE(says("the window has no GL context")) << viewed.second;
+    EXPECT_FALSE(says("presenting through the window's GL context")) << viewed.second;
+  } else {
+    EXPECT_TRUE(says("presenting through the window's GL context (")) << viewed.second;
+    EXPECT_FALSE(says("Vulkan swapchain")) << viewed.second;
+  }
+  EXPECT_FALSE(says("not read back")) << viewed.second;
+  EXPECT_FALSE(says("cannot present")) << viewed.second;
   ASSERT_TRUE(fs::exists(dir / "view.png"));
   const ImagePixels view = read_exr(dir / "view.exr");
   const ImagePixels run = read_exr(dir / ("run/phong/pixel/torus/" + language + "-" + backend + "-" + path + ".exr"));
@@ -141,6 +156,82 @@ TEST(View, KeysChangeShapeVariantAndWireframe) {
   EXPECT_LT(lines * 2, filled) << lines << " of " << filled;
   EXPECT_GT(drawn_pixels(image(torus)), 1000u);
   EXPECT_NE(title.find("shaderbed view: phong/pixel hlsl vulkan/spirv torus | pass"), std::string::npos) << title;
+}
+
+// Columns [x0, x0 + width) of an image.
+ImagePixels columns(const ImagePixels& image, int x0, int width) {
+  ImagePixels out{width, image.height, image.channels, {}};
+  for (int y = 0; y < image.height; ++y)
+    for (int x = x0; x < x0 + width && x < image.width; ++x)
+      for (int c = 0; c < image.channels; ++c)
+        out.values.push_back(image.values[(size_t(y) * image.width + x) * image.channels + c]);
+  return out;
+}
+
+size_t count_of(const std::string& text, const std::string& what) {
+  size_t n = 0;
+  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+TEST(View, BSwitchesBetweenTheSwapchainAndTheGlWindow) {
+  TempDir dir("view_present");
+  run_cells(dir, "--case phong --variant pixel --shape sphere --lang glsl");
+  VirtualDisplay display(dir);
+  ASSERT_TRUE(display.ready());
+  ViewerSession viewer(display, dir,
+                       "--case phong --variant pixel --lang glsl --backend vulkan --shape sphere --size " +
+                           std::to_string(kSize) + " --out " + (dir / "shots"));
+  ASSERT_TRUE(viewer.has_window()) << viewer.errors();
+  const std::string on_vulkan = viewer.screenshot();
+  viewer.keys("B");   // vulkan/spirv -> gl/glsl: a window with a GL context replaces the swapchain's
+  ASSERT_TRUE(viewer.follow_new_window()) << viewer.errors();
+  const std::string on_gl = viewer.screenshot();
+  viewer.keys("b");   // back to vulkan/spirv, and to a swapchain
+  ASSERT_TRUE(viewer.follow_new_window()) << viewer.errors();
+  viewer.keys("e");   // the split view, through the swapchain
+  const std::string split = viewer.screenshot();
+  const std::string title = viewer.title();
+  const std::string errors = viewer.errors();
+  EXPECT_EQ(viewer.quit(), 0) << errors;
+
+  // One window per API in turn, each saying how it presents.
+  const std::string vulkan_says = "presenting through a Vulkan swapchain (lavapipe, VK_KHR_";
+  const std::string gl_says = "presenting through the window's GL context (";
+  EXPECT_EQ(count_of(errors, vulkan_says), 2u) << errors;
+  EXPECT_EQ(count_of(errors, gl_says), 1u) << errors;
+  EXPECT_LT(errors.find(vulkan_says), errors.find(gl_says)) << errors;
+  EXPECT_LT(errors.find(gl_says), errors.rfind(vulkan_says)) << errors;
+  EXPECT_EQ(errors.find("not read back"), std::string::npos) << errors;
+  EXPECT_EQ(errors.find("cannot present"), std::string::npos) << errors;
+  EXPECT_NE(title.find("glsl vulkan/spirv sphere | pass"), std::string::npos) << title;
+
+  // What each window presented, read back, is the run's PNG of its cell.
+  const auto png = [](const std::string& file) {
+    auto image = read_image_file(file);
+    return image ? *image : ImagePixels{};
+  };
+  const std::string run = dir / "run/phong/pixel/sphere/";
+  EXPECT_EQ(on_vulkan, dir / "shots/phong/pixel/sphere/glsl-vulkan-spirv.view-1");
+  EXPECT_EQ(on_gl, dir / "shots/phong/pixel/sphere/glsl-gl-glsl.view-1");
+  EXPECT_EQ(split, dir / "shots/phong/pixel/sphere/glsl-vulkan-spirv.view-2");
+  for (const auto& [shot, cell] : {std::pair{on_vulkan, std::string("glsl-vulkan-spirv")},
+                                   std::pair{on_gl, std::string("glsl-gl-glsl")}}) {
+    const ImagePixels shown = png(shot + ".png");
+    EXPECT_EQ(shown.width, kSize) << shot;
+    EXPECT_EQ(differing_pixels(shown, png(run + cell + ".png")), 0u) << shot;
+    EXPECT_EQ(differing_pixels(read_exr(shot + ".exr"), read_exr(run + cell + ".exr")), 0u) << shot;
+  }
+  // The split view through the swapchain: render | reference | error, the panels the
+  // screenshot writes from the frame itself, two black columns apart.
+  const ImagePixels shown = png(split + ".png");
+  ASSERT_EQ(shown.width, 3 * kSize + 4);
+  ASSERT_EQ(shown.height, kSize);
+  EXPECT_EQ(differing_pixels(columns(shown, 0, kSize), png(run + "glsl-vulkan-spirv.png")), 0u);
+  EXPECT_EQ(differing_pixels(columns(shown, kSize + 2, kSize), png(split + ".reference.png")), 0u);
+  EXPECT_EQ(differing_pixels(columns(shown, 2 * kSize + 4, kSize), png(split + ".error.png")), 0u);
+  const ImagePixels gap = columns(shown, kSize, 2);
+  EXPECT_TRUE(std::ranges::all_of(gap.values, [](float v) { return v == 0; })) << "the gap is black";
 }
 
 // A copy of the phong case and its GLSL shaders, to edit under the viewer.
