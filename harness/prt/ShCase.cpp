@@ -321,24 +321,41 @@ Result<ShPrepared> prepare_sh(const Case& c, const Mesh& shape, const SceneSetup
 
   std::vector<glm::dvec3> truncated(vertex_count);
   if (c.model == "sh") {
-    // Always 16 coefficients per channel (4 bands, zero beyond `bands`): one shader serves
-    // every band count up to the 16 vertex attributes GL has (12 for the transfer).
-    if (bands > 4)
-      return fail_sh(fmt::format("bands = {}: the sh case's transfer is 16 coefficients per channel as vertex inputs "
-                                 "(12 of GL's 16 attributes), at most 4 bands",
-                                 bands));
-    const size_t per_channel = 16;
-    for (const char* channel : {"sh_r", "sh_g", "sh_b"}) add_channel_streams(out.mesh.extra, channel, per_channel);
-    out.mesh.extra.values.assign(vertex_count * 3 * per_channel, 0.0f);
+    // Two ways to the GPU, one per variant. Up to 4 bands, 16 coefficients per channel as
+    // 12 vec4 vertex inputs (`sh_r0`..`sh_b3`, zero beyond `bands`; GL guarantees 16
+    // attributes). Any band count up to 8, a data texture `sh_transfer` (one row per
+    // vertex: R, G, B blocks of vec4s) read at the vertex's `sh_index`.
+    constexpr size_t per_channel = 16, texture_channel = 64;
+    if (bands <= 4)
+      for (const char* channel : {"sh_r", "sh_g", "sh_b"}) add_channel_streams(out.mesh.extra, channel, per_channel);
+    out.mesh.extra.names.push_back("sh_index");
+    const size_t stride = out.mesh.extra.stride_floats();
+    out.mesh.extra.values.assign(vertex_count * stride, 0.0f);
+    const size_t texels_per_channel = (n + 3) / 4;
+    Texture data;
+    data.name = "sh_transfer";
+    data.width = uint32_t(3 * texels_per_channel);
+    data.height = uint32_t(vertex_count);
+    data.format = TexelFormat::rgba32_float;
+    data.texels.assign(size_t(data.width) * data.height * 4, 0.0f);
     for (size_t v = 0; v < vertex_count; ++v) {
       const auto t = transfer.vertex(v);
       for (size_t i = 0; i < n; ++i)
-        for (int k = 0; k < 3; ++k) out.mesh.extra.values[v * 3 * per_channel + k * per_channel + i] = float(t[i][k]);
+        for (int k = 0; k < 3; ++k) {
+          if (bands <= 4) out.mesh.extra.values[v * stride + k * per_channel + i] = float(t[i][k]);
+          data.texels[(v * data.width + k * texels_per_channel) * 4 + i] = float(t[i][k]);
+        }
+      out.mesh.extra.values[v * stride + stride - 4] = float(v);
       truncated[v] = sh::shade(transfer, v, coefficients);
     }
-    std::vector<glm::dvec3> light16(coefficients);
-    light16.resize(per_channel, glm::dvec3(0.0));
-    add_light_uniforms(out.uniforms, light16);
+    out.textures["sh_transfer"] = std::make_shared<const Texture>(std::move(data));
+    // (width, height, vec4s per channel): where the shader finds a vertex's coefficients.
+    out.uniforms["sh_transfer_layout"] = {float(3 * texels_per_channel), float(vertex_count), float(texels_per_channel), 0};
+    // 64 per channel, zero past `bands`: the texture variant's arrays take them all, the
+    // vertex-input variant's 16-coefficient arrays the first 16.
+    std::vector<glm::dvec3> light(coefficients);
+    light.resize(texture_channel, glm::dvec3(0.0));
+    add_light_uniforms(out.uniforms, light);
     out.bytes_per_vertex = 3 * n * sizeof(float);
   } else {
     if (auto ok = check_int(c, "clusters", 1, 4096); !ok) return std::unexpected(ok.error());
