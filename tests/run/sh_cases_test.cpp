@@ -42,7 +42,7 @@ TEST(ShCases, TheApproximationErrorFallsWithBands) {
   shaderbed::test::TempDir dir;
   std::map<int, double> by_bands;
   for (int bands : {1, 2, 4}) {
-    const json report = run_json("--case sh --shape sphere --lang glsl --backend vulkan --param bands=" +
+    const json report = run_json("--case sh --variant vertex --shape sphere --lang glsl --backend vulkan --param bands=" +
                                      std::to_string(bands) + " --param grid=12",
                                  dir.path() / ("b" + std::to_string(bands) + ".json"));
     ASSERT_EQ(report["results"].size(), 1u);
@@ -50,6 +50,16 @@ TEST(ShCases, TheApproximationErrorFallsWithBands) {
   }
   EXPECT_GT(by_bands[1], by_bands[2]);
   EXPECT_GT(by_bands[2], by_bands[4]);
+}
+
+TEST(ShCases, TheTextureVariantTakesEightBands) {
+  shaderbed::test::TempDir dir;
+  const json report = run_json("--case sh --variant texture --shape sphere --param bands=8", dir.path() / "b8.json");
+  ASSERT_FALSE(report["results"].empty());
+  for (const json& r : report["results"]) {
+    EXPECT_EQ(r["status"], "pass") << r["id"] << ": " << r["message"];
+    EXPECT_EQ(double(r["sh"]["bytes_per_vertex"]), 3 * 64 * 4.0) << r["id"];
+  }
 }
 
 TEST(ShCases, BadSettingsAreInputErrors) {
