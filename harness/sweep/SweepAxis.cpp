@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "prt/ShCase.h"
+
 namespace shaderbed {
 namespace {
 
@@ -26,8 +28,9 @@ std::vector<std::string> split(const std::string& text, char separator) {
   return parts;
 }
 
+// Counts: LUT sizes, mesh slices, and the SH cases' bands, rays, clusters and the like.
 bool integer_axis(const std::string& name) {
-  return name == "lut_size" || name == "lut_rows" || name == kTessellationAxis;
+  return name == "lut_size" || name == "lut_rows" || name == kTessellationAxis || is_sh_approximation_parameter(name);
 }
 
 }  // namespace
