@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "sh/Basis.h"
+#include "sh/Lights.h"
 #include "sh/Sampling.h"
 #include "sh/Transfer.h"
 #include "sh/TransferScene.h"
@@ -398,6 +399,39 @@ TEST(Transfer, ReportsProgressAndRejectsBadOptions) {
   EXPECT_FALSE(compute_transfer(scene, {.grid = 0}).has_value());
   EXPECT_FALSE(compute_transfer(scene, {.kind = TransferKind::interreflected, .bounces = -1}).has_value());
   EXPECT_FALSE(transfer_bounce(scene, std::vector<VertexTransfer>{}, jittered_samples(4, 1)).has_value());
+}
+
+// A planted mutant of the precompute: the projection without its Monte Carlo weight 4π/N
+// (every sample weighted 1). The SH cases' approximation check (truncated SH in double
+// against the exact integral, harness/run: judge_sh) is what catches a wrong precompute
+// that the shader then reproduces faithfully; this is that check on the ball on a plane
+// under the case's light, with sh.toml's bound of 0.12.
+TEST(Transfer, AMissingMonteCarloWeightFailsTheApproximationBound) {
+  const TransferScene scene = make_scene(ball_on_plane(10, 6));
+  const glm::dvec3 albedo(0.8);
+  const glm::dvec3 to_light = glm::normalize(glm::dvec3(-0.4, 1.0, 0.2));
+  const DirectionalLight light = make_directional_light(to_sh_frame(to_light), glm::dvec3(1.0)).value();
+  const std::vector<glm::dvec3> coefficients = light.coefficients(4);
+  const TransferOptions options{.kind = TransferKind::shadowed, .bands = 4, .grid = 20, .seed = 1, .bounces = 0};
+
+  const auto worst_error = [&](std::span<const Sample> samples) {
+    const std::vector<VertexTransfer> transfer = compute_transfer(scene, options, samples).value();
+    double worst = 0;
+    const TransferMesh& ball = scene.meshes().front();
+    for (size_t v = 0; v < ball.positions.size(); ++v) {
+      const glm::dvec3 truncated = shade(transfer.front(), v, coefficients);
+      const glm::dvec3 exact =
+          exact_directional(scene, ball.positions[v], ball.normals[v], albedo, to_light, light.irradiance(), true);
+      worst = std::max(worst, glm::length(truncated - exact) / std::sqrt(3.0));
+    }
+    return worst;
+  };
+  const std::vector<Sample> correct = jittered_samples(options.grid, options.seed);
+  std::vector<Sample> unweighted = correct;
+  for (Sample& s : unweighted) s.weight = 1.0;
+
+  EXPECT_LT(worst_error(correct), 0.12);
+  EXPECT_GT(worst_error(unweighted), 1.0);   // N / 4π = 32 times too bright
 }
 
 }  // namespace
