@@ -144,13 +144,8 @@ void add_light_uniforms(NamedValues& values, std::span<const glm::dvec3> light) 
   std::vector<float> channel[3];
   for (const glm::dvec3& c : light)
     for (int k = 0; k < 3; ++k) channel[k].push_back(float(c[k]));
-  std::vector<float> all;
   const char* names[3] = {"sh_light_r", "sh_light_g", "sh_light_b"};
-  for (int k = 0; k < 3; ++k) {
-    values[names[k]] = padded(channel[k]);
-    all.insert(all.end(), values[names[k]].begin(), values[names[k]].end());
-  }
-  values["sh_light"] = all;
+  for (int k = 0; k < 3; ++k) values[names[k]] = padded(channel[k]);
 }
 
 double ms_since(std::chrono::steady_clock::time_point t0) {

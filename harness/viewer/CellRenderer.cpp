@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include "core/CacheSettings.h"
 #include "lut/LookupTexture.h"
 #include "lut/LutTolerance.h"
 #include "run/CaseTextures.h"
@@ -83,7 +86,7 @@ Result<const Texture*> CellRenderer::lut_of(const Case& c, const Variant& varian
 Result<CellRenderer::Drawn> CellRenderer::draw_program(const Case& c, const Variant& variant, Language language,
                                                        const std::string& backend_name, ShaderPath path,
                                                        const Mesh& mesh, const SceneSetup& scene, bool wireframe,
-                                                       const Texture* lut) {
+                                                       const Texture* lut, const ShPrepared* sh) {
   const std::string key = c.name + "/" + variant.name + "/" + to_string(language);
   auto device = backend(backend_name);   // first, so it starts while the probe compiles
   if (!device) return std::unexpected(device.error());
@@ -97,9 +100,12 @@ Result<CellRenderer::Drawn> CellRenderer::draw_program(const Case& c, const Vari
   static const BindingTable no_bindings;
   const auto bindings = c.bindings.find(language);
   const BindingTable& table = bindings == c.bindings.end() ? no_bindings : bindings->second;
-  CaseUniforms uniforms(table, bindable_values(scene, c), c.path);
+  NamedValues values = bindable_values(scene, c);
+  if (sh) values.insert(sh->uniforms.begin(), sh->uniforms.end());
+  CaseUniforms uniforms(table, std::move(values), c.path);
   if (auto bound = uniforms.check_all_bound(*compiled.program); !bound) return std::unexpected(bound.error());
-  CaseTextures textures(table, c.textures.for_language(language), lut, c.path, &compiled.program->sampler_settings);
+  CaseTextures textures(table, c.textures.for_language(language), lut, c.path, &compiled.program->sampler_settings,
+                        sh ? &sh->textures : nullptr);
   if (auto ok = textures.check(*compiled.program); !ok) return std::unexpected(ok.error());
   DrawJob job{*compiled.program, path, mesh, uniforms, scene.width, scene.height, &textures, {.warmup = 0, .runs = 0}};
   job.render_state = compiled.program->render_state;
@@ -109,6 +115,19 @@ Result<CellRenderer::Drawn> CellRenderer::draw_program(const Case& c, const Vari
   auto rendered = (*device)->render(job);
   if (!rendered) return std::unexpected(Error(rendered.error()).in_backend(backend_name + "/" + to_string(path)));
   return Drawn{std::move(rendered->image), rendered->timings.draw_ms + rendered->timings.readback_ms};
+}
+
+Result<const ShPrepared*> CellRenderer::sh_of(const Case& c, const std::string& mesh_key, const SceneSetup& scene) {
+  std::string key = c.path + "|" + mesh_key + "|" + fmt::format("{},{},{}", scene.lights.direction.x,
+                                                                 scene.lights.direction.y, scene.lights.direction.z);
+  for (const auto& [name, values] : c.params) key += fmt::format("|{}={}", name, fmt::join(values, ","));
+  if (!sh_ || key != sh_key_) {
+    const std::string root = cache_settings().root;
+    sh_ = prepare_sh(c, meshes_.at(mesh_key), scene, root.empty() ? std::filesystem::path() : std::filesystem::path(root) / "sh");
+    sh_key_ = key;
+  }
+  if (!*sh_) return std::unexpected((*sh_).error());
+  return &**sh_;
 }
 
 Frame CellRenderer::draw(const FrameRequest& request) {
@@ -123,7 +142,8 @@ Frame CellRenderer::draw(const FrameRequest& request) {
     luts_.clear();
   }
   probe_.prepare();   // its start-up overlaps the backend's, on the first frame
-  const Case c = with_parameters(*request.c, s);
+  Case c = with_parameters(*request.c, s);
+  apply_sh_defaults(c);
   const auto finish = [&](Frame& f) -> Frame {
     f.frame_ms = ms_since(t0);
     return std::move(f);
@@ -143,8 +163,16 @@ Frame CellRenderer::draw(const FrameRequest& request) {
     if (!mesh) return failed(Error{.message = "unknown shape '" + s.shape_name() + "'", .stage = "options"});
     meshes_.emplace(mesh_key, std::move(*mesh));
   }
-  const Mesh& mesh = meshes_.at(mesh_key);
   const SceneSetup scene = scene_of(s, request.size);
+  // An SH case draws the shape with its transfer streams, uniforms and textures (harness/prt).
+  const ShPrepared* sh = nullptr;
+  if (is_sh_model(c.model)) {
+    if (request.sources_changed) sh_.reset();
+    auto prepared = sh_of(c, mesh_key, scene);
+    if (!prepared) return failed(prepared.error());
+    sh = *prepared;
+  }
+  const Mesh& mesh = sh ? sh->mesh : meshes_.at(mesh_key);
 
   // The thresholds, widened for a LUT variant by its bound over what this shape shows.
   auto lut = lut_of(c, *variant);
@@ -168,7 +196,7 @@ Frame CellRenderer::draw(const FrameRequest& request) {
   // The image: the shader's (also in Gouraud mode with wireframe: its lines are the mask).
   std::optional<Drawn> shader;
   if (!s.gouraud || s.wireframe) {
-    auto drawn = draw_program(c, *variant, s.language, s.backend, s.path, mesh, scene, s.wireframe, *lut);
+    auto drawn = draw_program(c, *variant, s.language, s.backend, s.path, mesh, scene, s.wireframe, *lut, sh);
     if (!drawn) return failed(drawn.error());
     frame.draw_ms = drawn->draw_ms;
     shader = std::move(*drawn);
@@ -189,6 +217,10 @@ Frame CellRenderer::draw(const FrameRequest& request) {
   if (!c.reference_images.empty()) {
     frame.reference_problem = "the case's reference is stored images (" + c.reference_images +
                               "): the viewer draws only model and original references";
+  } else if (sh) {   // the truncated SH in double, as run judges it
+    auto reference = render_reference(mesh, scene, c, variant->mode, *sh->truncated);
+    if (reference) frame.reference = std::move(*reference);
+    else frame.reference_problem = reference.error().to_string();
   } else if (!c.differential()) {
     auto reference = render_reference(mesh, scene, c, variant->mode);
     if (reference) frame.reference = std::move(*reference);

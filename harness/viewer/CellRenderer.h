@@ -18,6 +18,7 @@
 
 #include "backends/Backend.h"
 #include "compare/ImageComparison.h"
+#include "prt/ShCase.h"
 #include "run/ProgramCache.h"
 #include "scene/CaseFile.h"
 #include "viewer/CompileProbe.h"
@@ -66,9 +67,13 @@ class CellRenderer {
     Image image;
     double draw_ms = 0;
   };
+  // `sh`: an SH case's prepared inputs (harness/prt), whose mesh `mesh` is; else null.
   Result<Drawn> draw_program(const Case& c, const Variant& variant, Language language, const std::string& backend,
                              ShaderPath path, const Mesh& mesh, const SceneSetup& scene, bool wireframe,
-                             const Texture* lut);
+                             const Texture* lut, const ShPrepared* sh = nullptr);
+  // An SH case's inputs and references for this shape, parameters and light, prepared
+  // once and kept until one of them changes.
+  Result<const ShPrepared*> sh_of(const Case& c, const std::string& mesh_key, const SceneSetup& scene);
   Result<Backend*> backend(const std::string& name);
   Result<const Texture*> lut_of(const Case& c, const Variant& variant);
 
@@ -78,6 +83,8 @@ class CellRenderer {
   std::map<std::string, Result<std::unique_ptr<Backend>>> backends_;    // started on first use
   std::map<std::string, Mesh> meshes_;                                   // shape/tessellation
   std::map<std::string, Result<Texture>> luts_;                          // variant and parameters
+  std::string sh_key_;                                                   // what sh_ was prepared for
+  std::optional<Result<ShPrepared>> sh_;
 };
 
 }  // namespace shaderbed::viewer

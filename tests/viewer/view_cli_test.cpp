@@ -62,15 +62,17 @@ const nlohmann::json& cell_of(const nlohmann::json& results, const std::string& 
 
 // `xvfb-run -a shaderbed view ... --screenshot FILE --frames N` against `run`'s render.
 void expect_screenshot_is_the_runs_render(const std::string& language, const std::string& backend,
-                                          const std::string& path) {
+                                          const std::string& path, const std::string& case_name = "phong",
+                                          const std::string& variant = "pixel") {
   TempDir dir("view_run");
   const nlohmann::json results =
-      run_cells(dir, "--case phong --variant pixel --shape torus --lang " + language + " --backend " + backend);
-  const std::string cell = "phong/pixel/" + language + "/" + backend + "/" + path + "/torus";
+      run_cells(dir, "--case " + case_name + " --variant " + variant + " --shape torus --lang " + language +
+                                 " --backend " + backend);
+  const std::string cell = case_name + "/" + variant + "/" + language + "/" + backend + "/" + path + "/torus";
   std::pair<int, std::string> viewed;
   {
     XvfbStartLock lock;   // xvfb-run -a and a concurrent test could pick the same display
-    viewed = run_shell("xvfb-run -a " + kBinary + " view --case phong --variant pixel --shape torus --lang " + language +
+    viewed = run_shell("xvfb-run -a " + kBinary + " view --case " + case_name + " --variant " + variant + " --shape torus --lang " + language +
                        " --backend " + backend + " --path " + path + " --size " + std::to_string(kSize) +
                        " --screenshot " + (dir / "view.png") + " --frames 3");
   }
@@ -91,7 +93,7 @@ void expect_screenshot_is_the_runs_render(const std::string& language, const std
   EXPECT_FALSE(says("cannot present")) << viewed.second;
   ASSERT_TRUE(fs::exists(dir / "view.png"));
   const ImagePixels view = read_exr(dir / "view.exr");
-  const ImagePixels run = read_exr(dir / ("run/phong/pixel/torus/" + language + "-" + backend + "-" + path + ".exr"));
+  const ImagePixels run = read_exr(dir / ("run/" + case_name + "/" + variant + "/torus/" + language + "-" + backend + "-" + path + ".exr"));
   ASSERT_EQ(view.width, kSize);
   EXPECT_GT(drawn_pixels(run), 1000u);
   EXPECT_LE(share_of_tolerance(view, run, cell_of(results, cell)), 1.0) << cell;
@@ -103,13 +105,16 @@ void expect_screenshot_is_the_runs_render(const std::string& language, const std
   };
   const ImagePixels shown = png(dir / "view.png");
   EXPECT_EQ(shown.width, kSize);
-  EXPECT_EQ(differing_pixels(shown, png(dir / ("run/phong/pixel/torus/" + language + "-" + backend + "-" + path + ".png"))),
+  EXPECT_EQ(differing_pixels(shown, png(dir / ("run/" + case_name + "/" + variant + "/torus/" + language + "-" + backend + "-" + path + ".png"))),
             0u);
 }
 
 TEST(View, ScreenshotIsTheRunsRenderOnVulkan) { expect_screenshot_is_the_runs_render("hlsl", "vulkan", "spirv"); }
 
 TEST(View, ScreenshotIsTheRunsRenderOnGl) { expect_screenshot_is_the_runs_render("glsl", "gl", "glsl"); }
+
+// An SH case: the shape with its transfer texture and light uniforms (harness/prt).
+TEST(View, AnShCaseIsTheRunsRender) { expect_screenshot_is_the_runs_render("glsl", "vulkan", "spirv", "sh", "texture"); }
 
 TEST(View, KeysChangeShapeVariantAndWireframe) {
   TempDir dir("view_keys");
