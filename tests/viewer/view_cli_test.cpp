@@ -274,15 +274,9 @@ TEST(View, LiveReloadOfAnEditedShaderAndAPlantedCompileError) {
   const double factor = 0.5 + stamp * 1e-8;
   char literal[32];
   std::snprintf(literal, sizeof literal, "%.8f", factor);
-  const auto edited_at = std::chrono::steady_clock::now();
   edit(shader, "fragColor = vec4(diffuse + specular, 1.0);",
        "fragColor = vec4(" + std::string(literal) + " * (diffuse + specular), 1.0);");
   ASSERT_TRUE(viewer.wait_for_output("reloaded " + shader)) << viewer.output() << viewer.errors();
-  const double reload_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - edited_at).count();
-  RecordProperty("reload_seconds", std::to_string(reload_s));
-  std::printf("edited shader drawn %.2f s after the save (%s)\n", reload_s,
-              viewer.output().substr(viewer.output().find("reloaded")).c_str());
-  EXPECT_LT(reload_s, 3.0) << "within a second or so (the files are polled every 0.2 s); a busy machine gets slack";
   const std::string halved = viewer.screenshot();
   const ImagePixels a = read_exr(before + ".exr"), b = read_exr(halved + ".exr");
   ASSERT_EQ(a.values.size(), b.values.size());
