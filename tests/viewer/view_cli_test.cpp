@@ -3,7 +3,7 @@
 // Vulkan swapchain on a window without a GL context, or the window's GL context), B
 // making the window again between the two; keys sent with xdotool change the shape, the
 // variant and the fill, and its screenshots change with them (each the run's render of the
-// new cell); an edited shader is drawn again within a second or so, a planted compile
+// new cell); an edited shader is drawn again (its speed is not asserted here), a planted compile
 // error shows its file and line in the title and on stderr while the last good image
 // stays, and a shader that crashes the compiler does not take the viewer down; without a
 // display it says how to get one and exits 2.
