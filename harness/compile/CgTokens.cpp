@@ -19,17 +19,17 @@ constexpr std::string_view kPunctuators[] = {"<<=", ">>=", "::", "++", "--", "<<
 
 std::vector<Token> lex(std::string_view s) {
   std::vector<Token> out;
+  out.reserve(s.size() / 4 + 16);  // about one token per 4 bytes of shader text: no regrowth
   std::size_t i = 0;
   int line = 1;
   bool line_start = true;  // only whitespace (or comments) since the last line break
   const auto emit = [&](TokenKind kind, std::size_t begin, std::size_t end, int at_line) {
-    Token t;
+    Token& t = out.emplace_back();
     t.kind = kind;
     t.begin = begin;
     t.end = end;
     t.physical_line = at_line;
-    t.text = std::string(s.substr(begin, end - begin));
-    out.push_back(std::move(t));
+    t.text.assign(s.substr(begin, end - begin));
   };
   while (i < s.size()) {
     const char c = s[i];
@@ -112,11 +112,12 @@ std::vector<Token> lex(std::string_view s) {
       continue;
     }
     std::size_t len = 1;
-    for (std::string_view p : kPunctuators)
-      if (s.substr(i, p.size()) == p) {
-        len = p.size();
-        break;
-      }
+    if (std::string_view("<>:+-=!&|*/%^").find(c) != std::string_view::npos)  // the first chars of kPunctuators
+      for (std::string_view p : kPunctuators)
+        if (s.substr(i, p.size()) == p) {
+          len = p.size();
+          break;
+        }
     i += len;
     emit(TokenKind::punctuation, begin, i, begin_line);
   }

@@ -178,10 +178,11 @@ class Translator {
   void rewrite(size_t i) {
     Token& t = tokens_[i];
     const std::string name = t.text;
-    for (const Unsupported& u : kUnsupported)
-      if (name == u.name || (u.name.starts_with("gl_EyePlane") && name.starts_with("gl_EyePlane")) ||
-          (u.name.starts_with("gl_ObjectPlane") && name.starts_with("gl_ObjectPlane")))
-        return fail_at(t, name + " (" + std::string(u.why) + ") is not supported by the legacy-GLSL dialect");
+    if (name.starts_with("gl_") || name.starts_with("shadow"))  // as every kUnsupported name does
+      for (const Unsupported& u : kUnsupported)
+        if (name == u.name || (u.name.starts_with("gl_EyePlane") && name.starts_with("gl_EyePlane")) ||
+            (u.name.starts_with("gl_ObjectPlane") && name.starts_with("gl_ObjectPlane")))
+          return fail_at(t, name + " (" + std::string(u.why) + ") is not supported by the legacy-GLSL dialect");
     if (name.starts_with("gl_MultiTexCoord") && name != "gl_MultiTexCoord0")
       return fail_at(t, name + " is not supported by the legacy-GLSL dialect: meshes have one texture coordinate set");
     for (const auto& [legacy, modern] : kLookups)
