@@ -299,33 +299,13 @@ Result<void> VulkanPresenter::create_swapchain() {
   return {};
 }
 
-Result<void> VulkanPresenter::ensure(HostBuffer& b, VkDeviceSize size, VkBufferUsageFlags usage) {
-  if (b.size >= size) return {};
-  b = {};
-  const VkBufferCreateInfo info{.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO,
-                                .size = size,
-                                .usage = usage,
-                                .sharingMode = VK_SHARING_MODE_EXCLUSIVE};
-  VkBuffer buffer;
-  if (auto ok = check(vkCreateBuffer(device_, &info, nullptr, &buffer), "vkCreateBuffer"); !ok) return ok;
-  b.buffer = vulkan::OwnedBuffer(device_, buffer);
-  VkMemoryRequirements needs;
-  vkGetBufferMemoryRequirements(device_, buffer, &needs);
-  const VkMemoryPropertyFlags wanted = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
-  uint32_t type = memory_.memoryTypeCount;
-  for (uint32_t i = 0; i < memory_.memoryTypeCount && type == memory_.memoryTypeCount; ++i)
-    if ((needs.memoryTypeBits & (1u << i)) && (memory_.memoryTypes[i].propertyFlags & wanted) == wanted) type = i;
-  if (type == memory_.memoryTypeCount)
-    return std::unexpected(display_error("no host-visible, coherent memory for the window's pixels"));
-  const VkMemoryAllocateInfo alloc{.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO,
-                                   .allocationSize = needs.size,
-                                   .memoryTypeIndex = type};
-  VkDeviceMemory memory;
-  if (auto ok = check(vkAllocateMemory(device_, &alloc, nullptr, &memory), "vkAllocateMemory"); !ok) return ok;
-  b.memory = vulkan::OwnedMemory(device_, memory);
-  if (auto ok = check(vkBindBufferMemory(device_, buffer, memory, 0), "vkBindBufferMemory"); !ok) return ok;
-  if (auto ok = check(vkMapMemory(device_, memory, 0, VK_WHOLE_SIZE, 0, &b.mapped), "vkMapMemory"); !ok) return ok;
-  b.size = size;
+Result<void> VulkanPresenter::ensure(std::optional<vulkan::HostBuffer>& b, VkDeviceSize size,
+                                     VkBufferUsageFlags usage) {
+  if (b && b->size() >= size) return {};
+  b.reset();
+  auto made = vulkan::HostBuffer::create(device_, memory_, size, usage);
+  if (!made) return std::unexpected(made.error());
+  b = std::move(*made);
   return {};
 }
 
@@ -376,7 +356,7 @@ Result<void> VulkanPresenter::present_once(const DisplayImage& image, bool alert
     const bool swap = bgra(format_.format);
     const std::array<uint8_t, 3> frame = alert ? kAlertRgb : std::array<uint8_t, 3>{0, 0, 0};
     const uint8_t background[4] = {frame[swap ? 2 : 0], frame[1], frame[swap ? 0 : 2], 255};
-    auto* out = static_cast<uint8_t*>(upload_.mapped);
+    auto* out = reinterpret_cast<uint8_t*>(upload_->data());
     for (size_t i = 0; i < size_t(width) * height; ++i) std::memcpy(out + i * 4, background, 4);
     for (int y = 0; y < shown.height; ++y) {
       uint8_t* row = out + (size_t(p.y + y) * width + size_t(p.x)) * 4;
@@ -407,7 +387,7 @@ Result<void> VulkanPresenter::present_once(const DisplayImage& image, bool alert
                                 .imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
                                 .imageOffset = {0, 0, 0},
                                 .imageExtent = {width, height, 1}};
-  vkCmdCopyBufferToImage(commands_, upload_.buffer.get(), target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &whole);
+  vkCmdCopyBufferToImage(commands_, upload_->buffer(), target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &whole);
   if (read_back) {
     // The screenshot: the image's rectangle, read from the swapchain image about to be presented.
     image_barrier(commands_, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
@@ -419,13 +399,13 @@ Result<void> VulkanPresenter::present_once(const DisplayImage& image, bool alert
                                  .imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
                                  .imageOffset = {p.x, p.y, 0},
                                  .imageExtent = {uint32_t(p.width), uint32_t(p.height), 1}};
-    vkCmdCopyImageToBuffer(commands_, target, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback_.buffer.get(), 1, &rect);
+    vkCmdCopyImageToBuffer(commands_, target, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback_->buffer(), 1, &rect);
     const VkBufferMemoryBarrier to_host{.sType = VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER,
                                         .srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT,
                                         .dstAccessMask = VK_ACCESS_HOST_READ_BIT,
                                         .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
                                         .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-                                        .buffer = readback_.buffer.get(),
+                                        .buffer = readback_->buffer(),
                                         .offset = 0,
                                         .size = VK_WHOLE_SIZE};
     vkCmdPipelineBarrier(commands_, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1,
@@ -448,7 +428,7 @@ Result<void> VulkanPresenter::present_once(const DisplayImage& image, bool alert
 
   if (read_back) {
     *capture = {p.width, p.height, std::vector<uint8_t>(size_t(p.width) * p.height * 3)};
-    const auto* from = static_cast<const uint8_t*>(readback_.mapped);
+    const auto* from = reinterpret_cast<const uint8_t*>(readback_->data());
     const bool swap = bgra(format_.format);
     for (size_t i = 0; i < size_t(p.width) * p.height; ++i, from += 4) {
       capture->rgb[i * 3 + 0] = from[swap ? 2 : 0];
@@ -480,8 +460,8 @@ VulkanPresenter::~VulkanPresenter() {
   if (device_ != VK_NULL_HANDLE) {
     vkDeviceWaitIdle(device_);
     if (swapchain_ != VK_NULL_HANDLE) vkDestroySwapchainKHR(device_, swapchain_, nullptr);
-    readback_ = {};
-    upload_ = {};
+    readback_.reset();
+    upload_.reset();
     done_.reset();
     acquired_.reset();
     pool_.reset();

@@ -10,12 +10,14 @@
 // (vkCmdCopyBufferToImage), and, for a screenshot, read back from that image
 // (vkCmdCopyImageToBuffer) before it is presented: the screenshot is the presented image.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <vulkan/vulkan.h>
 
 #include "backends/vulkan/VulkanHandles.h"
+#include "backends/vulkan/VulkanMemory.h"
 #include "viewer/Presenter.h"
 
 struct GLFWwindow;
@@ -40,18 +42,12 @@ class VulkanPresenter final : public Presenter {
   std::string description() const override;
 
  private:
-  struct HostBuffer {
-    vulkan::OwnedBuffer buffer;
-    vulkan::OwnedMemory memory;
-    void* mapped = nullptr;
-    VkDeviceSize size = 0;
-  };
-
   VulkanPresenter(const GlfwLibrary& glfw, GLFWwindow* window) : glfw_(glfw), window_(window) {}
   Result<void> create_device();
   // A swapchain the surface's current size (none while the window has no area).
   Result<void> create_swapchain();
-  Result<void> ensure(HostBuffer& buffer, VkDeviceSize size, VkBufferUsageFlags usage);
+  // `buffer` at least `size` bytes (kept between frames of the same size).
+  Result<void> ensure(std::optional<vulkan::HostBuffer>& buffer, VkDeviceSize size, VkBufferUsageFlags usage);
   // One attempt; `retry` when the swapchain was out of date and has been replaced.
   Result<void> present_once(const DisplayImage& image, bool alert, DisplayImage* capture, bool& retry);
 
@@ -67,7 +63,7 @@ class VulkanPresenter final : public Presenter {
   vulkan::OwnedCommandPool pool_;
   VkCommandBuffer commands_ = VK_NULL_HANDLE;   // freed with the pool
   vulkan::OwnedFence acquired_, done_;
-  HostBuffer upload_, readback_;
+  std::optional<vulkan::HostBuffer> upload_, readback_;
 
   VkSwapchainKHR swapchain_ = VK_NULL_HANDLE;
   std::vector<VkImage> images_;

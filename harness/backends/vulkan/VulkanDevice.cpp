@@ -289,14 +289,6 @@ VulkanDevice::~VulkanDevice() {
   if (instance_ != VK_NULL_HANDLE) vkDestroyInstance(instance_, nullptr);
 }
 
-Result<uint32_t> VulkanDevice::memory_type(uint32_t type_bits, VkMemoryPropertyFlags required) const {
-  for (uint32_t i = 0; i < memory_properties_.memoryTypeCount; ++i) {
-    if ((type_bits & (1u << i)) && (memory_properties_.memoryTypes[i].propertyFlags & required) == required) return i;
-  }
-  return std::unexpected(backend_error("no memory type with property flags " + std::to_string(required) +
-                                       " for type bits " + std::to_string(type_bits)));
-}
-
 std::optional<VkQueryPool> VulkanDevice::timestamp_pool() const {
   if (!timestamp_pool_) return std::nullopt;
   return timestamp_pool_.get();

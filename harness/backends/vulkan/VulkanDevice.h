@@ -55,8 +55,8 @@ class VulkanDevice {
   // "llvmpipe (LLVM 15.0.6, 256 bits) [cpu]"
   std::string device_name() const;
 
-  // First memory type allowed by type_bits that has all of `required`.
-  Result<uint32_t> memory_type(uint32_t type_bits, VkMemoryPropertyFlags required) const;
+  // Its memory types (find_memory_type in VulkanMemory.h picks one).
+  const VkPhysicalDeviceMemoryProperties& memory_properties() const { return memory_properties_; }
 
   // Records one command buffer with `record`, submits it and waits for it. After a
   // timeout the device is considered lost: the work may still be running, so every

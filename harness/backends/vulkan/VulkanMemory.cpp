@@ -2,13 +2,26 @@
 
 #include <algorithm>
 #include <cstring>
+#include <string>
 
 #include "backends/vulkan/VulkanResult.h"
 
 namespace shaderbed::vulkan {
 
+Result<uint32_t> find_memory_type(const VkPhysicalDeviceMemoryProperties& memory, uint32_t type_bits,
+                                  VkMemoryPropertyFlags required) {
+  for (uint32_t i = 0; i < memory.memoryTypeCount; ++i)
+    if ((type_bits & (1u << i)) && (memory.memoryTypes[i].propertyFlags & required) == required) return i;
+  return std::unexpected(backend_error("no memory type with property flags " + std::to_string(required) +
+                                       " for type bits " + std::to_string(type_bits)));
+}
+
 Result<HostBuffer> HostBuffer::create(const VulkanDevice& device, VkDeviceSize size, VkBufferUsageFlags usage) {
-  VkDevice dev = device.device();
+  return create(device.device(), device.memory_properties(), size, usage);
+}
+
+Result<HostBuffer> HostBuffer::create(VkDevice dev, const VkPhysicalDeviceMemoryProperties& memory_types,
+                                      VkDeviceSize size, VkBufferUsageFlags usage) {
   HostBuffer out;
   // Zero-sized buffers are invalid in Vulkan; an empty uniform block still gets a binding.
   out.size_ = std::max<VkDeviceSize>(size, 16);
@@ -23,7 +36,8 @@ Result<HostBuffer> HostBuffer::create(const VulkanDevice& device, VkDeviceSize s
 
   VkMemoryRequirements req;
   vkGetBufferMemoryRequirements(dev, buffer, &req);
-  auto type = device.memory_type(req.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+  auto type = find_memory_type(memory_types, req.memoryTypeBits,
+                               VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
   if (!type) return std::unexpected(type.error());
   const VkMemoryAllocateInfo alloc{.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO,
                                    .allocationSize = req.size,
@@ -49,7 +63,7 @@ Result<OwnedMemory> bind_device_memory(const VulkanDevice& device, VkImage image
   VkDevice dev = device.device();
   VkMemoryRequirements req;
   vkGetImageMemoryRequirements(dev, image, &req);
-  auto type = device.memory_type(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+  auto type = find_memory_type(device.memory_properties(), req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
   if (!type) return std::unexpected(type.error());
   const VkMemoryAllocateInfo alloc{.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO,
                                    .allocationSize = req.size,

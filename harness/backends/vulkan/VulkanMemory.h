@@ -12,9 +12,16 @@
 
 namespace shaderbed::vulkan {
 
+// The first memory type in `type_bits` with all of `required`.
+Result<uint32_t> find_memory_type(const VkPhysicalDeviceMemoryProperties& memory, uint32_t type_bits,
+                                  VkMemoryPropertyFlags required);
+
 class HostBuffer {
  public:
   static Result<HostBuffer> create(const VulkanDevice& device, VkDeviceSize size, VkBufferUsageFlags usage);
+  // The same on a device that is not a VulkanDevice (the viewer's presentation device).
+  static Result<HostBuffer> create(VkDevice device, const VkPhysicalDeviceMemoryProperties& memory, VkDeviceSize size,
+                                   VkBufferUsageFlags usage);
 
   VkBuffer buffer() const { return buffer_.get(); }
   VkDeviceSize size() const { return size_; }
