@@ -19,6 +19,7 @@
 
 #include <fmt/format.h>
 
+#include "core/AddressSanitizer.h"
 #include "run/WorkerProtocol.h"
 
 extern char** environ;
@@ -137,8 +138,12 @@ Result<Worker> spawn_worker(const RunOptions& o, const std::string& options_line
     ::setpgid(0, 0);
     ::prctl(PR_SET_PDEATHSIG, SIGKILL);
     if (::getppid() != parent) _exit(126);
-    const rlimit as{memory, memory};
-    ::setrlimit(RLIMIT_AS, &as);
+    // AddressSanitizer reserves terabytes of shadow address space at start, so under it the
+    // limit would stop every worker; its own allocator refuses absurd sizes instead.
+    if constexpr (!address_sanitizer_build) {
+      const rlimit as{memory, memory};
+      ::setrlimit(RLIMIT_AS, &as);
+    }
     // Deep recursion in a parser (10^5 nested parentheses) overflows this and crashes the
     // worker, which is what isolation is for; 64 MiB keeps ordinary shaders far from it.
     const rlimit stack{rlim_t(64) << 20, rlim_t(64) << 20};
