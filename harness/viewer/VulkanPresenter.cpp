@@ -109,6 +109,7 @@ Result<std::unique_ptr<VulkanPresenter>> VulkanPresenter::create(const GlfwLibra
                                            .pApplicationInfo = &app,
                                            .enabledExtensionCount = uint32_t(extensions.size()),
                                            .ppEnabledExtensionNames = extensions.data()};
+  vulkan::pin_driver_for_leak_reports();
   if (VkResult r = vkCreateInstance(&instance_info, nullptr, &self->instance_); r != VK_SUCCESS) {
     self->instance_ = VK_NULL_HANDLE;
     std::string names;

@@ -41,17 +41,6 @@ std::string driver_files_in_use() {
   return "the system's ICDs";
 }
 
-// Sanitizer builds only: LeakSanitizer checks at exit, after the loader has dlclosed the
-// driver. lavapipe's globals were unmapped by then, so a block only they pointed to (128
-// bytes) was reported as a leak from an "<unknown module>". Pinned (RTLD_NODELETE), the
-// driver's globals stay mapped, LeakSanitizer finds the block reachable and reports nothing.
-void pin_driver_for_leak_reports() {
-  if constexpr (address_sanitizer_build) {
-    static void* const pinned = ::dlopen("libvulkan_lvp.so", RTLD_NOW | RTLD_NODELETE);
-    (void)pinned;
-  }
-}
-
 // An instance that only enumerates (list_vulkan_devices) or drives one device.
 Result<VkInstance> create_instance() {
   pin_driver_for_leak_reports();
@@ -122,6 +111,17 @@ std::string device_name_of(VkPhysicalDevice device) {
 }
 
 }  // namespace
+
+// Sanitizer builds only: LeakSanitizer checks at exit, after the loader has dlclosed the
+// driver. lavapipe's globals were unmapped by then, so a block only they pointed to (128
+// bytes) was reported as a leak from an "<unknown module>". Pinned (RTLD_NODELETE), the
+// driver's globals stay mapped, LeakSanitizer finds the block reachable and reports nothing.
+void pin_driver_for_leak_reports() {
+  if constexpr (address_sanitizer_build) {
+    static void* const pinned = ::dlopen("libvulkan_lvp.so", RTLD_NOW | RTLD_NODELETE);
+    (void)pinned;
+  }
+}
 
 Result<std::vector<VulkanDeviceInfo>> list_vulkan_devices() {
   isolate_mesa_shader_cache();   // the drivers load here too: the same cache as every other run
