@@ -16,11 +16,11 @@
 
 namespace shaderbed::vulkan {
 
-// lavapipe's ICD manifest as Debian's mesa-vulkan-drivers installs it.
 // Sanitizer builds: keeps lavapipe loaded to the end so LeakSanitizer sees its globals
 // (VulkanDevice.cpp says why). Call before the first vkCreateInstance. A no-op otherwise.
 void pin_driver_for_leak_reports();
 
+// lavapipe's ICD manifest as Debian's mesa-vulkan-drivers installs it.
 inline constexpr const char* lavapipe_icd_manifest = "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json";
 
 // One physical device as `shaderbed devices` lists it; `index` is what --vulkan-device takes.
