@@ -22,8 +22,6 @@
 #include "core/AddressSanitizer.h"
 #include "run/WorkerProtocol.h"
 
-extern char** environ;
-
 namespace shaderbed {
 namespace {
 
@@ -120,18 +118,9 @@ Result<Worker> spawn_worker(const RunOptions& o, const std::string& options_line
     return fail("isolation", std::string("pipe: ") + std::strerror(errno));
   }
   // Everything the child needs is built before fork: only async-signal-safe calls after it.
-  std::vector<std::string> env_text;
-  for (char** e = environ; *e; ++e)
-    if (!std::string_view(*e).starts_with("SHADERBED_WORKER_EVENTS_FD=")) env_text.emplace_back(*e);
+  std::vector<std::string> env_text = environment_keeping_crash_signals();
+  std::erase_if(env_text, [](const std::string& e) { return e.starts_with("SHADERBED_WORKER_EVENTS_FD="); });
   env_text.emplace_back("SHADERBED_WORKER_EVENTS_FD=3");
-  if constexpr (address_sanitizer_build) {
-    // A crash in glslang is an outcome the supervisor reports by its signal; ASan's own
-    // SEGV handler would turn it into exit status 1 and the cell would lose the signal.
-    auto asan = std::find_if(env_text.begin(), env_text.end(),
-                             [](const std::string& e) { return e.starts_with("ASAN_OPTIONS="); });
-    if (asan == env_text.end()) env_text.emplace_back("ASAN_OPTIONS=handle_segv=0");
-    else *asan += ":handle_segv=0";
-  }
   std::vector<char*> envp;
   for (std::string& e : env_text) envp.push_back(e.data());
   envp.push_back(nullptr);

@@ -154,7 +154,7 @@ int run_viewer(const ViewerOptions& o) {
   auto reload_seen = Clock::now();
   std::vector<std::string> reloaded_files;
   std::deque<InputEvent> queue;
-  bool screenshot_pending = false;                // waiting for generation screenshot_at's frame to write one
+  bool screenshot_pending = false;                // c: waiting for generation screenshot_at's frame (and a resize) to write one
   uint64_t screenshot_at = 0;
   int frames = 0;
   std::vector<double> draw_times;
@@ -191,6 +191,7 @@ int run_viewer(const ViewerOptions& o) {
     // The window as it shows the frame, read back, so the file is what is on screen; when
     // the window is not at one image pixel per pixel (resized, or a resize still on its
     // way), the content at that scale instead.
+    show();   // keys in the same batch (e, then c) may have changed it since the last show
     const DisplayImage composed = compose(*good, state.split);
     DisplayImage shown = win.capture();
     if (shown.width != composed.width || shown.height != composed.height) {
@@ -211,6 +212,12 @@ int run_viewer(const ViewerOptions& o) {
   };
 
   uint64_t last_frame = 0;   // the generation of the last frame that arrived
+  // A pending screenshot (c), once its frame has arrived and the window has its size.
+  const auto take_screenshot_when_due = [&] {
+    if (!screenshot_pending || last_frame < screenshot_at || win.resizing()) return;
+    take_screenshot(next_screenshot_stem(o.out_dir, state));
+    screenshot_pending = false;
+  };
   while (!quit) {
     win.wait(kPollSeconds);
     tell();   // a frame the window's refresh could not present
@@ -218,13 +225,14 @@ int run_viewer(const ViewerOptions& o) {
     if (win.close_requested()) break;
 
     // Input, in order; a screenshot holds the rest back until the frame of the state the
-    // keys before it made has arrived, so keys, then a screenshot, is deterministic.
-    const bool split_before = state.split;
+    // keys before it made has arrived, and the window has the size they asked for, so
+    // keys, then a screenshot, is deterministic.
     bool touched = false;
     while (!queue.empty() && !screenshot_pending && !quit) {
       const InputEvent e = queue.front();
       queue.pop_front();
       touched = true;
+      const bool split_before = state.split;
       if (e.kind == InputEvent::Kind::drag) drag_light(state, e.dx, e.dy, win.height());
       else if (e.kind == InputEvent::Kind::scroll) scroll_zoom(state, e.steps);
       else switch (handle_key(state, e.key)) {
@@ -232,12 +240,13 @@ int run_viewer(const ViewerOptions& o) {
           case Effect::help: fmt::print("{}", key_table()), std::fflush(stdout); break;
           case Effect::screenshot:
             if (!state.same_image(requested)) request();
-            if (last_frame == generation) take_screenshot(next_screenshot_stem(o.out_dir, state));
-            else screenshot_pending = true, screenshot_at = generation;
+            screenshot_pending = true, screenshot_at = generation;
+            take_screenshot_when_due();
             break;
           case Effect::redraw:
           case Effect::none: break;
         }
+      if (state.split != split_before) win.resize(content_width(o.size, state.split), o.size);
     }
     if (quit) break;
 
@@ -268,11 +277,11 @@ int run_viewer(const ViewerOptions& o) {
       }
     }
     if (!state.same_image(requested)) request();
-    if (state.split != split_before) win.resize(content_width(o.size, state.split), o.size);
 
     std::optional<Frame> frame = worker.take();
     if (!frame) {
       if (touched) show();   // the split view, the selected parameter, the title
+      take_screenshot_when_due();   // e.g. once a resize has landed
       continue;
     }
     ++frames;
@@ -294,10 +303,7 @@ int run_viewer(const ViewerOptions& o) {
     }
     show();
     if (quit) break;
-    if (screenshot_pending && last_frame >= screenshot_at) {
-      take_screenshot(next_screenshot_stem(o.out_dir, state));
-      screenshot_pending = false;
-    }
+    take_screenshot_when_due();
     // --screenshot FILE --frames N: N frames, then the file, then exit.
     if (!o.screenshot.empty() && !screenshot_pending && queue.empty() && last_frame == generation) {
       if (frames < o.frames) {

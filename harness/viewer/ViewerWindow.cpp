@@ -1,8 +1,10 @@
 #include "viewer/ViewerWindow.h"
 
+#include <chrono>
 #include <mutex>
 #include <optional>
 
+#include "core/LeakReportPins.h"
 #include "viewer/GlPresenter.h"
 #include "viewer/GlfwLibrary.h"
 #include "viewer/VulkanPresenter.h"
@@ -54,6 +56,8 @@ struct ViewerWindow::Impl {
   bool alert = false;
   bool dragging = false;
   double last_x = 0, last_y = 0;
+  std::optional<std::pair<int, int>> requested_size;   // a resize() not seen on screen yet
+  std::chrono::steady_clock::time_point requested_at;
 
   void push(InputEvent e) {
     const std::lock_guard lock(events_mutex);
@@ -114,6 +118,7 @@ struct ViewerWindow::Impl {
       return fail("display", std::string(with == PresentApi::vulkan ? "cannot open a window for Vulkan: "
                                                                      : "cannot open a window with a GL context: ") +
                                  take_error());
+    pin_loaded_libraries_for_leak_reports();   // the GL window's DRI driver, which GLX closes with it
     if (position) glfw->set_window_pos(window, position->first, position->second);
     Result<std::unique_ptr<Presenter>> made = std::unique_ptr<Presenter>();
     if (with == PresentApi::vulkan) {
@@ -227,7 +232,18 @@ void ViewerWindow::set_title(const std::string& title) {
 }
 
 void ViewerWindow::resize(int width, int height) {
-  impl_->glfw->set_window_size(impl_->window, width + 2 * kFrame, height + 2 * kFrame);
+  impl_->requested_size = std::pair(width + 2 * kFrame, height + 2 * kFrame);
+  impl_->requested_at = std::chrono::steady_clock::now();
+  impl_->glfw->set_window_size(impl_->window, impl_->requested_size->first, impl_->requested_size->second);
+}
+
+bool ViewerWindow::resizing() {
+  if (!impl_->requested_size) return false;
+  std::pair<int, int> now;
+  impl_->glfw->get_window_size(impl_->window, &now.first, &now.second);
+  if (now == *impl_->requested_size || std::chrono::steady_clock::now() - impl_->requested_at > std::chrono::seconds(1))
+    impl_->requested_size.reset();
+  return impl_->requested_size.has_value();
 }
 
 void ViewerWindow::show(const DisplayImage& image, bool alert) {

@@ -53,6 +53,10 @@ class ViewerWindow {
   void set_title(const std::string& title);
   // Room for an image of width x height (the content is scaled to fit whatever the size).
   void resize(int width, int height);
+  // Whether the last resize() is still on its way: the window system applies it later.
+  // False once the window has the size, or a second after the request in any case (a
+  // window manager may give it another).
+  bool resizing();
   // Shows `image`, scaled to fit, in a frame that is red when `alert`.
   void show(const DisplayImage& image, bool alert);
   // What the window shows of the image, read back from what it presents (the GL back

@@ -171,10 +171,11 @@ class ViewerSession {
   bool wait_for_errors(const std::string& text, double timeout_s = 20) const {
     return wait_until([&] { return errors().find(text) != std::string::npos; }, timeout_s);
   }
-  // Presses c and waits for the screenshot it writes; returns its stem (".png", ".exr" follow).
-  std::string screenshot() {
+  // Presses c (after `first`, in the same xdotool call) and waits for the screenshot it
+  // writes; returns its stem (".png", ".exr" follow).
+  std::string screenshot(const std::string& first = "") {
     const size_t before = count("screenshot: ");
-    keys("c");
+    keys(first.empty() ? "c" : "--delay 0 " + first + " c");
     if (!wait_until([&] { return count("screenshot: ") > before; }, 20)) return "";
     const std::string text = output();
     size_t at = std::string::npos;

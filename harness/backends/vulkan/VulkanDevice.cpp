@@ -1,7 +1,5 @@
 #include "backends/vulkan/VulkanDevice.h"
 
-#include <dlfcn.h>
-
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
@@ -10,7 +8,7 @@
 
 #include "backends/MesaEnvironment.h"
 #include "backends/vulkan/VulkanResult.h"
-#include "core/AddressSanitizer.h"
+#include "core/LeakReportPins.h"
 
 namespace shaderbed::vulkan {
 namespace {
@@ -112,16 +110,9 @@ std::string device_name_of(VkPhysicalDevice device) {
 
 }  // namespace
 
-// Sanitizer builds only: LeakSanitizer checks at exit, after the loader has dlclosed the
-// driver. lavapipe's globals were unmapped by then, so a block only they pointed to (128
-// bytes) was reported as a leak from an "<unknown module>". Pinned (RTLD_NODELETE), the
-// driver's globals stay mapped, LeakSanitizer finds the block reachable and reports nothing.
-void pin_driver_for_leak_reports() {
-  if constexpr (address_sanitizer_build) {
-    static void* const pinned = ::dlopen("libvulkan_lvp.so", RTLD_NOW | RTLD_NODELETE);
-    (void)pinned;
-  }
-}
+// lavapipe's globals, unmapped once the loader dlclosed it, held the only pointer to a
+// 128-byte block that LeakSanitizer then reported from an "<unknown module>".
+void pin_driver_for_leak_reports() { pin_library_for_leak_reports("libvulkan_lvp.so"); }
 
 Result<std::vector<VulkanDeviceInfo>> list_vulkan_devices() {
   isolate_mesa_shader_cache();   // the drivers load here too: the same cache as every other run
