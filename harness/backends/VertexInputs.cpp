@@ -6,18 +6,15 @@
 #include <optional>
 #include <string>
 
+#include "core/AsciiCase.h"
+
 namespace shaderbed {
 namespace {
-
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return s;
-}
 
 // "InVertex.Position" -> "position"; "in_normal", "aNormal", "aPos", "attrTexCoord" -> the attribute word.
 std::string attribute_word(std::string name) {
   if (auto dot = name.rfind('.'); dot != std::string::npos) name = name.substr(dot + 1);
-  std::string l = lower(name);
+  std::string l = ascii_lower(name);
   for (const char* prefix : {"attr_", "attr", "in_", "a_", "v_", "i_", "in", "a"}) {
     std::string p = prefix;
     if (l.size() > p.size() && l.starts_with(p)) {
@@ -50,9 +47,9 @@ std::optional<AttributeStream> from_word(const std::string& w) {
 std::optional<AttributeStream> from_extra(const std::string& word, const ExtraStreams* extra) {
   if (!extra) return std::nullopt;
   // "InVertex.sh_r0" reads the stream sh_r0: the struct's name is not part of it.
-  const std::string name = lower(word.substr(word.rfind('.') == std::string::npos ? 0 : word.rfind('.') + 1));
+  const std::string name = ascii_lower(word.substr(word.rfind('.') == std::string::npos ? 0 : word.rfind('.') + 1));
   for (size_t k = 0; k < extra->names.size(); ++k)
-    if (lower(extra->names[k]) == name)
+    if (ascii_lower(extra->names[k]) == name)
       return AttributeStream{VertexAttribute::extra, uint32_t(16 * k), 4, 1};
   return std::nullopt;
 }
@@ -84,7 +81,7 @@ Result<AttributeStream> attribute_stream_for(const StageInput& input, const Attr
   }
   if (auto a = from_extra(input.name, extra)) return *a;
   if (!input.semantic.empty()) {
-    std::string s = lower(input.semantic);
+    std::string s = ascii_lower(input.semantic);
     if (s == "position0" || s == "sv_position") s = "position";   // POSITION is #defined to SV_Position
     if (s == "normal0") s = "normal";
     if (s == "tangent0") s = "tangent";

@@ -7,7 +7,7 @@
 namespace shaderbed::bench {
 namespace {
 
-nlohmann::json interval(const TimingInterval& t) {
+nlohmann::json interval_json(const TimingInterval& t) {
   return {{"median", t.median}, {"low", t.low}, {"high", t.high}, {"level", t.level}};
 }
 
@@ -38,10 +38,10 @@ nlohmann::json comparison(const ReferenceVsDrivers& c) {
                      {"path", d.path},
                      {"language", d.language},
                      {"driver", d.driver},
-                     {"wall_ms", interval(d.wall)},
+                     {"wall_ms", interval_json(d.wall)},
                      {"reference_ratio", d.reference_ratio}});
   return {{"case", c.cell.case_name}, {"variant", c.cell.variant}, {"shape", c.cell.shape}, {"size", c.size},
-          {"runs", c.runs},           {"reference_ms", interval(c.reference)},  {"draws", draws}};
+          {"runs", c.runs},           {"reference_ms", interval_json(c.reference)},  {"draws", draws}};
 }
 
 nlohmann::json process(const ProcessTiming& t) {
@@ -52,7 +52,7 @@ nlohmann::json process(const ProcessTiming& t) {
           {"cpu_ms", t.cpu_ms}};
 }
 
-nlohmann::json suite_process(const SuiteProcess& s) {
+nlohmann::json suite_process_json(const SuiteProcess& s) {
   return {{"wall_ms", s.wall_ms}, {"cpu_ms", s.cpu_ms}, {"cells", s.cost.cells}, {"build_ms", s.cost.driver_build_ms()},
           {"failures", s.failures}};
 }
@@ -62,7 +62,7 @@ nlohmann::json processes(const ProcessCosts& p) {
   for (const ProcessTiming& t : p.startup) startup[t.label] = process(t);
   const auto ratio = [](double a, double b) { return b > 0 ? a / b : 0.0; };
   const double jit_floor = p.cold.cost.workers > 0 ? p.cold.cost.driver_build_ms() / p.cold.cost.workers : 0;
-  return {{"suite", {{"cold", suite_process(p.cold)}, {"warm", suite_process(p.warm)}, {"off", suite_process(p.off)}}},
+  return {{"suite", {{"cold", suite_process_json(p.cold)}, {"warm", suite_process_json(p.warm)}, {"off", suite_process_json(p.off)}}},
           {"ratios",
            {{"warm_of_cold", ratio(p.warm.wall_ms, p.cold.wall_ms)},
             {"off_of_cold", ratio(p.off.wall_ms, p.cold.wall_ms)},

@@ -8,7 +8,7 @@ namespace {
 
 std::string percent(double part, double whole) { return whole > 0 ? fmt::format("{:.1f} %", 100 * part / whole) : "-"; }
 
-std::string interval(const TimingInterval& t) {
+std::string interval_text(const TimingInterval& t) {
   return fmt::format("{:9.3f} ms [{:.3f}, {:.3f}] {:.0f}%", t.median, t.low, t.high, 100 * t.level);
 }
 
@@ -56,10 +56,10 @@ std::string comparison_section(const BenchReport& r) {
       r.size, r.size, r.comparisons.front().runs);
   for (const ReferenceVsDrivers& c : r.comparisons) {
     out += fmt::format("  {} ({} shaders)\n", c.cell.label(), c.draws.empty() ? "no" : c.draws.front().language);
-    out += fmt::format("    {:<24} {}\n", "reference (CPU, double)", interval(c.reference));
+    out += fmt::format("    {:<24} {}\n", "reference (CPU, double)", interval_text(c.reference));
     for (const DriverDraw& d : c.draws)
       out += fmt::format("    {:<24} {}   reference / {} = {:.1f}×\n",
-                         fmt::format("{}/{} ({})", d.backend, d.path, d.driver), interval(d.wall), d.driver,
+                         fmt::format("{}/{} ({})", d.backend, d.path, d.driver), interval_text(d.wall), d.driver,
                          d.reference_ratio);
   }
   return out;

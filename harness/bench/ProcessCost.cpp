@@ -1,5 +1,7 @@
 #include "bench/ProcessCost.h"
 
+#include <unistd.h>   // environ (glibc declares it with _GNU_SOURCE, which g++ and clang++ set)
+
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -11,8 +13,6 @@
 #include "core/ChildProcess.h"
 #include "core/ScratchDirectory.h"
 #include "report/JsonReport.h"
-
-extern char** environ;
 
 namespace shaderbed::bench {
 namespace fs = std::filesystem;

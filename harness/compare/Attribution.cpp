@@ -8,16 +8,10 @@
 
 #include <fmt/format.h>
 
+#include "compare/ValueClass.h"
+
 namespace shaderbed {
 namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
-inline int value_class(float v) {
-  if (std::isfinite(v)) return 0;
-  if (std::isnan(v)) return 1;
-  return v > 0 ? 2 : 3;
-}
 
 std::string where(const RenderOutcome& r) { return r.backend + "/" + r.path; }
 

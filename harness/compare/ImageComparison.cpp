@@ -7,6 +7,8 @@
 
 #include <fmt/format.h>
 
+#include "compare/ValueClass.h"
+
 // DESIGN: the coverage-count rule (blank and degenerate images).
 // Counting drawn pixels catches what per-pixel masks cannot: a render that draws
 // nothing (blank) or the wrong size and, with the expected area from the mesh, a
@@ -37,15 +39,6 @@
 
 namespace shaderbed {
 namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
-// 0 finite, 1 NaN, 2 +Inf, 3 -Inf.
-inline int value_class(double v) {
-  if (std::isfinite(v)) return 0;
-  if (std::isnan(v)) return 1;
-  return v > 0 ? 2 : 3;
-}
 
 struct PixelError {
   double error;        // largest per-channel |r - q|; 0 for equal non-finite values, inf for unequal
@@ -82,9 +75,6 @@ inline double pixel_share(const double* d, const Q* q, double max_abs, double ma
   return std::max({tolerance_share(d[0], q[0], max_abs, max_rel), tolerance_share(d[1], q[1], max_abs, max_rel),
                    tolerance_share(d[2], q[2], max_abs, max_rel)});
 }
-
-inline bool finite_rgb(const float* p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
-inline bool finite_rgb(const double* p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
 
 template <typename T>
 void add_values(ValueCounts& v, const T* p) {

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "compare/ValueClass.h"
+
 namespace shaderbed {
 namespace {
 
@@ -14,9 +16,6 @@ int64_t ordered(float f) {
   const int32_t bits = std::bit_cast<int32_t>(f);
   return bits >= 0 ? int64_t(bits) : -int64_t(bits & 0x7fffffff);
 }
-
-bool finite_rgb(const float* p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
-bool finite_rgb(const double* p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
 
 }  // namespace
 

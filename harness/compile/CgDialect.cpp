@@ -7,18 +7,13 @@
 #include <optional>
 
 #include "compile/CgTokens.h"
+#include "core/AsciiCase.h"
 
 namespace shaderbed {
 namespace {
 
 using cg::Token;
 using cg::TokenKind;
-
-std::string upper(std::string_view s) {
-  std::string u(s);
-  std::transform(u.begin(), u.end(), u.begin(), [](unsigned char c) { return char(std::toupper(c)); });
-  return u;
-}
 
 bool starts_with_digits(std::string_view s, std::string_view prefix, int lo, int hi, int* value = nullptr) {
   if (!s.starts_with(prefix) || s.size() == prefix.size()) return false;
@@ -309,12 +304,12 @@ Result<CgTranslation> translate_cg(std::string_view preprocessed, const std::str
         if (next->is("register") || next->is("packoffset")) break;
         // A semantic.
         Token& sem = t[i + 1];
-        const std::string written = upper(sem.text);
+        const std::string written = ascii_upper(sem.text);
         SemanticMapping m = map_semantic(written, stage);
         if (m.error) return std::unexpected(unsupported(sem, "semantic " + sem.text, *m.error));
-        out.semantics.push_back({written, upper(m.mapped), sem.file, sem.line});
+        out.semantics.push_back({written, ascii_upper(m.mapped), sem.file, sem.line});
         if (m.mapped != written) sem.text = m.mapped;
-        semantic_at[i + 1] = upper(m.mapped);
+        semantic_at[i + 1] = ascii_upper(m.mapped);
         break;
       }
       default:
@@ -430,7 +425,7 @@ Result<CgTranslation> translate_cg(std::string_view preprocessed, const std::str
 // ---- pass 4 -----------------------------------------------------------------------
 
 int cg_varying_location(std::string_view semantic) {
-  const std::string s = upper(semantic);
+  const std::string s = ascii_upper(semantic);
   int n = 0;
   if (s == "TEXCOORD") return 0;
   if (starts_with_digits(s, "TEXCOORD", 0, 7, &n)) return n;
@@ -443,7 +438,7 @@ namespace {
 
 // Fragment colour outputs: COLOR/COLORn (and HLSL's SV_Target) -> render target n.
 int cg_target_location(std::string_view semantic) {
-  const std::string s = upper(semantic);
+  const std::string s = ascii_upper(semantic);
   int n = 0;
   if (s == "COLOR" || s == "SV_TARGET") return 0;
   if (starts_with_digits(s, "COLOR", 0, 3, &n) || starts_with_digits(s, "SV_TARGET", 0, 7, &n)) return n;
@@ -571,7 +566,7 @@ Result<void> assign_cg_varying_locations(std::vector<uint32_t>& spirv, Stage sta
                                    .line = translation.entry_line,
                                    .stage = "compile"});
     }
-    const std::string semantic = upper(semantics[id]);
+    const std::string semantic = ascii_upper(semantics[id]);
     const bool target = stage == Stage::fragment && output;
     const int location = target ? cg_target_location(semantic) : cg_varying_location(semantic);
     const std::string name = names.contains(id) ? names[id] : "?";

@@ -25,11 +25,11 @@ bool is_dx9_texture_type(const Token& t) {
   return t.is_identifier() && types.contains(t.text);
 }
 
-bool is_sampler_type(const std::string& s) {
+bool is_effect_sampler_type(const std::string& s) {
   return s == "sampler" || s == "sampler1D" || s == "sampler2D" || s == "sampler3D" || s == "samplerCUBE";
 }
 
-bool is_qualifier(const Token& t) {
+bool is_storage_qualifier(const Token& t) {
   return t.is_identifier() && (t.is("uniform") || t.is("static") || t.is("shared") || t.is("extern") ||
                                t.is("const") || t.is("volatile") || t.is("inline"));
 }
@@ -155,7 +155,7 @@ class Parser {
 
   std::size_t first_after_qualifiers(const Item& item) const {
     std::size_t k = item.begin;
-    while (k < item.end && is_qualifier(tokens_[k])) ++k;
+    while (k < item.end && is_storage_qualifier(tokens_[k])) ++k;
     return k;
   }
 
@@ -262,7 +262,7 @@ class Parser {
   // `sampler2D s [: register(s0)] [<...>] = sampler_state { State = value; ... };`
   Result<void> parse_sampler(const Item& item, std::size_t type_at) {
     const Token& type = tokens_[type_at];
-    if (!is_sampler_type(type.text))
+    if (!is_effect_sampler_type(type.text))
       return std::unexpected(error_at(type, "effect feature 'sampler_state' on a '" + type.text +
                                                 "' is not supported by shaderbed's effect layer (declare a sampler, "
                                                 "sampler2D, sampler3D or samplerCUBE)"));

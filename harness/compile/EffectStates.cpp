@@ -6,13 +6,10 @@
 #include <map>
 #include <optional>
 
+#include "core/AsciiCase.h"
+
 namespace shaderbed {
 namespace {
-
-std::string upper(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::toupper(c)); });
-  return s;
-}
 
 Error state_error(const EffectAssignment& a, const std::string& path, std::string message) {
   return Error{.message = std::move(message), .file = path, .line = a.line, .stage = "compile"};
@@ -22,7 +19,7 @@ Error state_error(const EffectAssignment& a, const std::string& path, std::strin
 // "" when it is not a single word or number.
 std::string word(const EffectAssignment& a, std::string_view prefix) {
   if (a.value_tokens.size() != 1) return {};
-  std::string w = upper(a.value_tokens[0]);
+  std::string w = ascii_upper(a.value_tokens[0]);
   if (w.starts_with(prefix)) w = w.substr(prefix.size());
   return w;
 }
@@ -43,7 +40,7 @@ Result<bool> boolean(const EffectAssignment& a, const std::string& path) {
   return lookup<bool>(a, path, "D3DZB_", {{"TRUE", true}, {"FALSE", false}, {"1", true}, {"0", false}});
 }
 
-bool equals_name(const std::string& a, std::string_view b) { return upper(a) == upper(std::string(b)); }
+bool equals_name(const std::string& a, std::string_view b) { return ascii_upper(a) == ascii_upper(b); }
 
 const std::map<std::string, TextureFilter> kFilters = {
     {"POINT", TextureFilter::nearest}, {"LINEAR", TextureFilter::linear}, {"ANISOTROPIC", TextureFilter::linear},
@@ -95,7 +92,7 @@ Result<EffectShaderCompile> shader_compile(const EffectAssignment& a, const std:
   } else if (v.size() >= 6 && v[0] == "CompileShader" && v[1] == "(" && v[3] == ",") {
     out.profile = v[2];
     call = 4;
-  } else if (v.size() == 1 && (upper(v[0]) == "NULL")) {
+  } else if (v.size() == 1 && (ascii_upper(v[0]) == "NULL")) {
     return std::unexpected(state_error(a, path, a.name + " = NULL: shaderbed needs a vertex and a pixel shader "
                                                 "(no fixed-function pipeline)"));
   } else if (!v.empty() && v[0] == "asm") {
@@ -190,7 +187,7 @@ std::optional<std::string> default_only(const std::string& name) {
 }
 
 bool is_default_value(const std::string& value, const std::string& default_value) {
-  const std::string v = upper(value);
+  const std::string v = ascii_upper(value);
   if (default_value == "FALSE") return v == "FALSE" || v == "0";
   if (default_value == "15")
     return v == "15" || v == "0XF" || v == "0X0F" || v == "0X0000000F" ||
@@ -202,7 +199,7 @@ bool is_default_value(const std::string& value, const std::string& default_value
 
 Result<void> apply_sampler_state(const EffectAssignment& a, EffectSampler& s, const std::string& path,
                                  std::vector<EffectNote>& notes) {
-  const std::string name = upper(a.name);
+  const std::string name = ascii_upper(a.name);
   SamplerSettings& out = s.settings;
   if (a.index >= 0)
     return std::unexpected(state_error(a, path, "sampler state '" + a.name + "[" + std::to_string(a.index) +
@@ -264,7 +261,7 @@ Result<EffectPassStates> interpret_pass(const EffectPass& pass, const std::strin
   rs.cull = CullMode::ccw;
   rs.depth_compare = CompareOp::less_equal;
   for (const EffectAssignment& a : pass.states) {
-    const std::string name = upper(a.name);
+    const std::string name = ascii_upper(a.name);
     if (a.index >= 0)
       return std::unexpected(state_error(a, path, "render state '" + a.name + "[" + std::to_string(a.index) +
                                                       "]' is not supported (fixed-function texture stages; shaders "

@@ -21,7 +21,7 @@ bool is_opaque_type(std::string_view type) {
 }
 
 // Qualifiers that may stand between `uniform` and the type.
-bool is_qualifier(std::string_view word) {
+bool is_qualifier_word(std::string_view word) {
   static constexpr std::array<std::string_view, 14> words = {
       "uniform", "const",     "lowp",     "mediump",  "highp",     "precise",  "invariant",
       "coherent", "volatile", "restrict", "readonly", "writeonly", "flat",     "smooth"};
@@ -85,7 +85,7 @@ bool needs_relaxed_vulkan_rules(std::string_view text) {
         j = skip_parens(tokens, j + 1);
         continue;
       }
-      if (!tokens[j].is_identifier() || !is_qualifier(tokens[j].text)) break;
+      if (!tokens[j].is_identifier() || !is_qualifier_word(tokens[j].text)) break;
       uniform = uniform || tokens[j].is("uniform");
       ++j;
     }

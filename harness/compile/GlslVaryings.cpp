@@ -33,7 +33,7 @@ std::optional<int> int_literal(const std::string& text) {
 using cg::Token;
 using cg::TokenKind;
 
-bool is_qualifier(const Token& t) {
+bool is_varying_qualifier(const Token& t) {
   for (std::string_view w : {"flat", "smooth", "noperspective", "centroid", "sample", "invariant", "precise", "lowp",
                              "mediump", "highp", "in", "out", "patch", "const"})
     if (t.is(w)) return true;
@@ -121,7 +121,7 @@ class Scanner {
         ++i;
         continue;
       }
-      if (!t[i].is_identifier() || !is_qualifier(t[i])) break;
+      if (!t[i].is_identifier() || !is_varying_qualifier(t[i])) break;
       storage = storage || t[i].is(storage_);
       ++i;
     }
@@ -134,7 +134,7 @@ class Scanner {
     if (i + 1 < end && t[i + 1].is("{")) {   // interface block: matched by block name
       int locations = 0;
       for (size_t k = i + 2; k < end && !t[k].is("}"); ++k) {
-        if (!t[k].is_identifier() || is_qualifier(t[k])) continue;
+        if (!t[k].is_identifier() || is_varying_qualifier(t[k])) continue;
         auto per = locations_of(t[k].text);
         if (!per) return std::unexpected(error_at(t[k], "member type '" + t[k].text + "' of " + storage_ +
                                                             " block '" + t[type].text + "' has no known location "

@@ -1,8 +1,8 @@
 #include "core/AddressSanitizer.h"
 
-#include <algorithm>
+#include <unistd.h>   // environ (glibc declares it with _GNU_SOURCE, which g++ and clang++ set)
 
-extern char** environ;
+#include <algorithm>
 
 namespace shaderbed {
 

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "report/CellExplanation.h"
+#include "report/FirstLine.h"
 
 namespace shaderbed {
 namespace {
@@ -15,8 +16,6 @@ namespace {
 std::string where(const CellResult& r) {
   return fmt::format("{} {} {} {}/{} {}", r.case_name, r.variant, r.language, r.backend, r.path, r.shape);
 }
-
-std::string first_line(const std::string& s) { return s.substr(0, s.find('\n')); }
 
 void print_images(const CellResult& r, std::FILE* out) {
   const CellArtefacts& a = r.artefacts;

@@ -39,15 +39,6 @@ std::string sort_value(double v) {
 
 std::string db(double v) { return std::isfinite(v) ? fmt::format("{:.1f}", v) : sci(v); }
 
-bool shared_stage(const std::string& stage) { return stage == "compile" || stage == "reference"; }
-
-double own_ms(const CellResult& r) {
-  double ms = 0;
-  for (const auto& [stage, t] : r.time_ms)
-    if (!shared_stage(stage) && std::isfinite(t)) ms += t;
-  return ms;
-}
-
 // "pass", "fail" (new), "known", "error", "skipped".
 std::string kind(const CellResult& r) {
   if (r.status == "fail") return r.known_failure ? "known" : "fail";

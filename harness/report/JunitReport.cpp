@@ -10,6 +10,7 @@
 
 #include "core/AtomicFile.h"
 #include "report/CellExplanation.h"
+#include "report/FirstLine.h"
 #include "report/Markup.h"
 
 namespace shaderbed {
@@ -18,14 +19,7 @@ namespace {
 using markup::escape;
 using markup::sci;
 
-bool shared_stage(const std::string& stage) { return stage == "compile" || stage == "reference"; }
-
-double cell_seconds(const CellResult& r) {
-  double ms = 0;
-  for (const auto& [stage, t] : r.time_ms)
-    if (!shared_stage(stage) && std::isfinite(t)) ms += t;
-  return ms / 1000.0;
-}
+double cell_seconds(const CellResult& r) { return own_ms(r) / 1000.0; }
 
 std::string seconds(double s) { return fmt::format("{:.3f}", s); }
 
@@ -82,8 +76,6 @@ std::string system_out(const CellResult& r) {
     out += fmt::format("spirv hash: vertex {} fragment {}\n", r.vertex_spirv_hash, r.fragment_spirv_hash);
   return out;
 }
-
-std::string first_line(const std::string& s) { return s.substr(0, s.find('\n')); }
 
 struct Counts {
   size_t tests = 0, failures = 0, errors = 0, skipped = 0;

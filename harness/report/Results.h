@@ -2,6 +2,7 @@
 // The results model every report reads: one CellResult per case x variant x language x
 // backend x path x shape, plus the toolchain that produced them. JSON (write and read),
 // JUnit, HTML and the console table are views of this.
+#include <cmath>
 #include <map>
 #include <optional>
 #include <string>
@@ -204,5 +205,17 @@ struct RunReport {
     return true;
   }
 };
+
+// Whether a stage's time is shared by the cells of a program (its compile, its reference
+// image) rather than the cell's own.
+inline bool shared_stage(const std::string& stage) { return stage == "compile" || stage == "reference"; }
+
+// A cell's own time: its stages' milliseconds without the shared ones.
+inline double own_ms(const CellResult& r) {
+  double ms = 0;
+  for (const auto& [stage, t] : r.time_ms)
+    if (!shared_stage(stage) && std::isfinite(t)) ms += t;
+  return ms;
+}
 
 }  // namespace shaderbed

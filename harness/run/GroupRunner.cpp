@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "backends/Backend.h"
+#include "core/Elapsed.h"
 #include "run/CaseTextures.h"
 #include "run/CaseUniforms.h"
 #include "run/CellPlan.h"
@@ -44,8 +45,6 @@ namespace shaderbed {
 namespace fs = std::filesystem;
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
 GpuTiming gpu_timing(const RenderTimings& t, const TimingRequest& request) {
   const auto interval = [](const std::vector<double>& ms) {

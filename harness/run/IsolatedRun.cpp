@@ -20,12 +20,12 @@
 #include <fmt/format.h>
 
 #include "core/AddressSanitizer.h"
+#include "core/Elapsed.h"
 #include "run/WorkerProtocol.h"
 
 namespace shaderbed {
 namespace {
 
-using Clock = std::chrono::steady_clock;
 
 // ---- signals: SIGINT/SIGTERM end the run with what it has --------------------------------
 

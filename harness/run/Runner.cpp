@@ -16,6 +16,7 @@
 #include "compile/CompileCache.h"
 #include "core/BoundedFile.h"
 #include "core/CacheSettings.h"
+#include "core/Elapsed.h"
 #include "core/Fnv1a.h"
 #include "reference/ModelRegistry.h"
 #include "run/CellPlan.h"
@@ -32,8 +33,6 @@ namespace shaderbed {
 namespace fs = std::filesystem;
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
 // Reads the selected case files, applies --param overrides and checks every name filter.
 Result<std::vector<Case>> select_cases(const RunOptions& o) {

@@ -14,19 +14,19 @@ namespace shaderbed {
 namespace fs = std::filesystem;
 namespace {
 
-using json = nlohmann::ordered_json;
+using ordered_json = nlohmann::ordered_json;
 
 Error stored_error(const std::string& path, std::string message) {
   return Error{.message = std::move(message), .file = path, .stage = "stored images"};
 }
 
-json tools_json(const ToolVersions& t) {
+ordered_json tools_json(const ToolVersions& t) {
   return {{"glslang", t.glslang}, {"spirv_tools", t.spirv_tools}, {"spirv_cross", t.spirv_cross},
           {"vulkan_driver", t.vulkan_driver}, {"gl_driver", t.gl_driver}, {"llvm", t.llvm},
           {"vulkan_device", t.vulkan_device}};
 }
 
-ToolVersions tools_of(const json& j) {
+ToolVersions tools_of(const ordered_json& j) {
   ToolVersions t;
   const auto get = [&](const char* key, std::string& out) {
     if (j.contains(key) && j[key].is_string()) out = j[key].get<std::string>();
@@ -42,13 +42,13 @@ ToolVersions tools_of(const json& j) {
 }
 
 // The manifest as it is on disk, or an empty one when there is none yet.
-Result<json> read_manifest(const fs::path& file) {
+Result<ordered_json> read_manifest(const fs::path& file) {
   std::error_code ec;
-  if (!fs::exists(file, ec)) return json::object();
+  if (!fs::exists(file, ec)) return ordered_json::object();
   std::ifstream in(file);
   std::stringstream text;
   text << in.rdbuf();
-  json j = json::parse(text.str(), nullptr, false);
+  ordered_json j = ordered_json::parse(text.str(), nullptr, false);
   if (j.is_discarded() || !j.is_object() || !j.contains("images") || !j["images"].is_object())
     return std::unexpected(stored_error(file.string(), "not a shaderbed stored-images manifest"));
   return j;
@@ -75,7 +75,7 @@ Result<void> write_stored_manifest(const std::string& dir, const RunReport& repo
   const fs::path file = fs::path(dir) / "manifest.json";
   auto existing = read_manifest(file);
   if (!existing) return std::unexpected(existing.error());
-  json manifest = std::move(*existing);
+  ordered_json manifest = std::move(*existing);
   if (manifest.contains("size") && manifest["size"] != size)
     return std::unexpected(stored_error(file.string(), fmt::format("the folder holds {0}x{0} images; this run drew "
                                                                    "{1}x{1} (save into another folder)",
@@ -83,7 +83,7 @@ Result<void> write_stored_manifest(const std::string& dir, const RunReport& repo
   manifest["schema"] = kStoredImagesSchema;
   manifest["size"] = size;
   manifest["tools"] = tools_json(report.tools);
-  if (!manifest.contains("images")) manifest["images"] = json::object();
+  if (!manifest.contains("images")) manifest["images"] = ordered_json::object();
   for (const CellResult& r : report.results) {
     if (r.artefacts.stored_exr.empty()) continue;
     manifest["images"][r.id()] = {{"file", stored_image_file(r)},
@@ -100,8 +100,8 @@ Result<StoredRun> load_stored_run(const std::string& dir, int size) {
     return std::unexpected(stored_error(dir, "no manifest.json: not a folder written by shaderbed run --save-images"));
   auto manifest = read_manifest(file);
   if (!manifest) return std::unexpected(manifest.error());
-  const json& m = *manifest;
-  StoredRun run{.dir = dir, .size = m.value("size", 0), .tools = tools_of(m.value("tools", json::object()))};
+  const ordered_json& m = *manifest;
+  StoredRun run{.dir = dir, .size = m.value("size", 0), .tools = tools_of(m.value("tools", ordered_json::object()))};
   if (run.size != size)
     return std::unexpected(stored_error(file.string(), fmt::format("the stored images are {0}x{0}; this run draws "
                                                                    "{1}x{1} (run with --size {0})",

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "compile/LegacyGlsl.h"
+#include "core/AsciiCase.h"
 
 namespace shaderbed {
 namespace {
@@ -16,12 +17,6 @@ bool is_upper(char c) { return std::isupper(static_cast<unsigned char>(c)) != 0;
 bool is_lower(char c) { return std::islower(static_cast<unsigned char>(c)) != 0; }
 bool is_digit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
 bool is_alnum(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0; }
-
-std::string lower(std::string_view s) {
-  std::string out(s);
-  std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return out;
-}
 
 // Words authors glue together ("modelview", "lightdir", "WORLDVIEWPROJECTION").
 constexpr std::array kVocabulary = {
@@ -126,7 +121,7 @@ std::string matrix_quantity(const Words& words, const UniformFacts& u, std::stri
 // Effect (SAS) semantics name the matrix glued: WORLDVIEWPROJECTION, WORLDINVERSETRANSPOSE.
 std::string matrix_from_semantic(const UniformFacts& u, std::string& what) {
   if (u.semantic.empty()) return "";
-  return matrix_quantity(split_glued(lower(u.semantic)), u, what);
+  return matrix_quantity(split_glued(ascii_lower(u.semantic)), u, what);
 }
 
 // Book-style registers (README "The scene"): c0 transform, c4 light vector, c5 eye, c6 light position.
@@ -168,7 +163,7 @@ Vector vector_kind(const Words& w, std::string& what) {
 }
 
 Vector vector_from_semantic(const UniformFacts& u, std::string& what) {
-  const std::string s = lower(u.semantic);
+  const std::string s = ascii_lower(u.semantic);
   if (s.empty()) return Vector::none;
   if (s == "direction" || s == "lightdirection" || s == "lightdir")
     return what = "a light direction", Vector::light_vector;
@@ -250,7 +245,7 @@ std::optional<UniformGuess> material_guess(const Words& w, const UniformFacts& u
                      "a GL light's own ambient term: GL's default, none");
     return guessed({named("ambient_light")}, "name " + q + " looks like the ambient light colour");
   }
-  const std::string glued = lower(n);
+  const std::string glued = ascii_lower(n);
   if (colour && (has_any(w, {"emissive", "emission"}) || glued == "ke"))
     return guessed({literal(u.vecsize == 4 ? std::vector<double>{0, 0, 0, 1} : zeros(3))},
                    "name " + q + " looks like an emissive colour: none");
@@ -273,7 +268,7 @@ std::optional<UniformGuess> material_guess(const Words& w, const UniformFacts& u
 }
 
 std::optional<UniformGuess> material_from_semantic(const UniformFacts& u) {
-  const std::string s = lower(u.semantic);
+  const std::string s = ascii_lower(u.semantic);
   if (s.empty()) return std::nullopt;
   UniformFacts as_name = u;
   as_name.name = s;
@@ -295,7 +290,7 @@ Words name_words(std::string_view name) {
   Words raw;
   std::string current;
   const auto flush = [&] {
-    if (!current.empty()) raw.push_back(lower(current));
+    if (!current.empty()) raw.push_back(ascii_lower(current));
     current.clear();
   };
   for (size_t i = 0; i < name.size(); ++i) {

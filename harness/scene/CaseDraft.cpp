@@ -37,7 +37,7 @@ std::string number(double v) {
   return s;
 }
 
-std::string numbers(const std::vector<double>& values) {
+std::string number_list(const std::vector<double>& values) {
   if (values.size() == 1) return number(values[0]);
   std::string s = "[";
   for (size_t i = 0; i < values.size(); ++i) s += (i ? ", " : "") + number(values[i]);
@@ -49,7 +49,7 @@ std::string binding_value(const UniformGuess& g) {
   if (g.sources.size() == 1 && !g.sources[0].name.empty()) {
     value = toml_string(g.sources[0].name);
   } else if (g.sources.size() == 1) {
-    value = numbers(g.sources[0].literal);
+    value = number_list(g.sources[0].literal);
   } else {
     value = "[";
     for (size_t i = 0; i < g.sources.size(); ++i) {
@@ -193,7 +193,7 @@ CaseDraft draft_case(const std::vector<SurveyedLanguage>& languages, const std::
     for (const auto& [name, entry] : parameters) {
       std::string users;
       for (const std::string& u : entry.second) users += (users.empty() ? "'" : ", '") + u + "'";
-      w.commented(toml_key(name) + " = " + numbers(entry.first.value), entry.first.reason + " (for " + users + ")");
+      w.commented(toml_key(name) + " = " + number_list(entry.first.value), entry.first.reason + " (for " + users + ")");
     }
   }
 
@@ -229,7 +229,7 @@ CaseDraft draft_case(const std::vector<SurveyedLanguage>& languages, const std::
     for (const auto& [u, g] : lg.uniforms) {
       const std::string key = toml_key(u->name);
       if (g.bound_by_default) w.commented("# " + key, g.reason);
-      else if (g.todo()) w.todo("# " + key + " = " + numbers(g.placeholder), g.reason + ", under " + table);
+      else if (g.todo()) w.todo("# " + key + " = " + number_list(g.placeholder), g.reason + ", under " + table);
       else w.commented(key + " = " + binding_value(g), g.reason);
     }
   }

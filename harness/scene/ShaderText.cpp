@@ -7,22 +7,13 @@
 #include <set>
 
 #include "compile/EffectFile.h"
+#include "core/AsciiCase.h"
 
 namespace shaderbed {
 namespace {
 
 bool identifier(std::string_view name) {
   return !name.empty() && std::all_of(name.begin(), name.end(), [](unsigned char c) { return std::isalnum(c) || c == '_'; });
-}
-
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return s;
-}
-
-std::string upper(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::toupper(c)); });
-  return s;
 }
 
 std::smatch search(const std::string& text, const std::string& pattern) {
@@ -35,7 +26,7 @@ std::smatch search(const std::string& text, const std::string& pattern) {
 const char* kArray = R"((?:\s*\[[^\]]*\])?)";
 
 SpaceHint space_in(const std::string& words) {
-  const std::string l = lower(words);
+  const std::string l = ascii_lower(words);
   for (const char* w : {"world space", "world-space", "\"world\""}) if (l.find(w) != std::string::npos) return SpaceHint::world;
   for (const char* w : {"view space", "view-space", "eye space", "eye-space", "camera space", "\"view\"", "\"eye\""})
     if (l.find(w) != std::string::npos) return SpaceHint::view;
@@ -69,12 +60,12 @@ std::string bare_argument(std::string a) {
 }
 
 bool is_position_semantic(const std::string& s) {
-  const std::string u = upper(s);
+  const std::string u = ascii_upper(s);
   return u == "SV_POSITION" || u == "HPOS" || u.starts_with("POSITION");
 }
 
 bool is_colour_semantic(const std::string& s) {
-  const std::string u = upper(s);
+  const std::string u = ascii_upper(s);
   return u.starts_with("SV_TARGET") || u.starts_with("COLOR") || u == "COL";
 }
 

@@ -8,6 +8,7 @@
 #include <fmt/ranges.h>
 
 #include "core/CacheSettings.h"
+#include "core/Elapsed.h"
 #include "lut/LookupTexture.h"
 #include "lut/LutTolerance.h"
 #include "run/CaseTextures.h"
@@ -22,8 +23,6 @@
 namespace shaderbed::viewer {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
 const Variant* find_variant(const Case& c, const std::string& name) {
   const auto it = std::ranges::find(c.variants, name, &Variant::name);

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "core/Elapsed.h"
 #include "reference/ModelRegistry.h"
 #include "run/ParameterOverrides.h"
 #include "run/Runner.h"
@@ -24,8 +25,6 @@ namespace shaderbed::viewer {
 namespace fs = std::filesystem;
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
 constexpr double kPollSeconds = 0.2;   // how often the files are looked at (reload within a second)
 

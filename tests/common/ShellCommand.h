@@ -21,4 +21,11 @@ inline std::pair<int, std::string> run_shell(const std::string& command_line) {
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
 }
 
+#ifdef SHADERBED_BINARY
+// The shaderbed CLI (the build's binary) with `args`, for the areas whose tests run it.
+inline std::pair<int, std::string> shaderbed_cli(const std::string& args) {
+  return run_shell(std::string(SHADERBED_BINARY) + " " + args);
+}
+#endif
+
 }  // namespace shaderbed::test

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "TestThresholds.h"
 #include "CompareTestSupport.h"
 #include "compare/Attribution.h"
 
@@ -15,7 +16,7 @@ namespace shaderbed {
 namespace {
 
 using namespace compare_test;
-const ComparisonThresholds kThresholds{1e-5, 1e-2};
+using test::kThresholds;
 
 struct Cell {
   std::string language, backend, path;

@@ -94,7 +94,7 @@ Image render_of(const ReferenceImage& ref, const std::function<Rgb(size_t, const
   return im;
 }
 
-const ComparisonThresholds kThresholds{.interior_max_abs = 1e-4, .silhouette_max_abs = 1e-4};
+const ComparisonThresholds kFitThresholds{.interior_max_abs = 1e-4, .silhouette_max_abs = 1e-4};
 
 struct Explained {
   std::vector<ConventionFit> fits;
@@ -111,7 +111,7 @@ struct Explained {
 };
 
 Explained explain(const Image& render, const ReferenceImage& ref, const ConventionEvidence& evidence = {},
-                  const ComparisonThresholds& thresholds = kThresholds) {
+                  const ComparisonThresholds& thresholds = kFitThresholds) {
   return {explain_difference(render, ref, classify_pixels(ref), thresholds, evidence)};
 }
 

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "TestThresholds.h"
 #include "CompareTestSupport.h"
 #include "compare/Attribution.h"
 
@@ -13,7 +14,7 @@ namespace shaderbed {
 namespace {
 
 using namespace compare_test;
-const ComparisonThresholds kThresholds{1e-5, 1e-2};
+using test::kThresholds;
 
 // An off-centre disc (so mirroring moves it) as the reference.
 ReferenceImage reference() { return disc_reference(10, 18, 40); }

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "TestThresholds.h"
 #include "CompareTestSupport.h"
 #include "compare/ImageComparison.h"
 #include "compare/ImageFiles.h"
@@ -17,7 +18,7 @@ namespace {
 using namespace compare_test;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
-const ComparisonThresholds kThresholds{1e-5, 1e-2};
+using test::kThresholds;
 
 // An interior and a silhouette pixel of the default disc (radius 20 at (32, 32)).
 constexpr int kInteriorX = 32, kInteriorY = 32;

@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include "ReflectionLookup.h"
+#include "SourceTree.h"
 #include "TempDir.h"
 #include "compile/CgDialect.h"
 #include "compile/Compiler.h"
@@ -19,22 +21,17 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kCgShaders = fs::path(SHADERBED_SOURCE_DIR) / "shaders" / "cg";
+using test::find_member;
 
-ShaderSource source(Stage stage, std::string text, std::string path = "test.cg") {
+const fs::path kCgShaders = test::kShaders / "cg";
+
+ShaderSource cg_source(Stage stage, std::string text, std::string path = "test.cg") {
   return ShaderSource{.stage = stage, .path = std::move(path), .text = std::move(text)};
 }
 
 Result<ShaderModule> compile_cg(Stage stage, std::string text, std::string path = "test.cg",
                                 Target target = Target::vulkan) {
-  return compile_stage(Language::cg, source(stage, std::move(text), std::move(path)), target);
-}
-
-const UniformMember* find_member(const Reflection& r, const std::string& name) {
-  for (const UniformBlock& b : r.uniform_blocks)
-    for (const UniformMember& m : b.members)
-      if (m.name == name) return &m;
-  return nullptr;
+  return compile_stage(Language::cg, cg_source(stage, std::move(text), std::move(path)), target);
 }
 
 using test::TempDir;

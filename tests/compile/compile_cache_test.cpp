@@ -18,6 +18,7 @@
 
 #include <gtest/gtest.h>
 
+#include "SourceTree.h"
 #include "TempDir.h"
 #include "compile/CompileCache.h"
 #include "compile/Compiler.h"
@@ -32,7 +33,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kShaders = fs::path(SHADERBED_SOURCE_DIR) / "shaders";
+using test::kShaders;
 
 using test::TempDir;
 
@@ -59,7 +60,7 @@ CompileToolchain test_toolchain() {
   return t;
 }
 
-ShaderSource source(Stage stage, std::string text, std::string path, std::string entry = "main") {
+ShaderSource cache_source(Stage stage, std::string text, std::string path, std::string entry = "main") {
   return ShaderSource{.stage = stage, .path = std::move(path), .text = std::move(text), .entry_point = std::move(entry)};
 }
 
@@ -117,7 +118,7 @@ TEST(CompileCache, MissThenHitGivesTheCompiledModuleForEveryLibraryShader) {
 TEST(CompileCache, CrossGlslMissThenHitIsTheSameText) {
   TempDir dir;
   CompileCache cache(dir.path(), test_toolchain());
-  auto module = compile_stage(Language::hlsl, source(Stage::fragment, kHlslPixel, "p.hlsl"), Target::opengl);
+  auto module = compile_stage(Language::hlsl, cache_source(Stage::fragment, kHlslPixel, "p.hlsl"), Target::opengl);
   ASSERT_TRUE(module) << module.error().to_string();
   auto cold = cache.cross_glsl(module->spirv, Stage::fragment);
   ASSERT_TRUE(cold) << cold.error().to_string();
@@ -138,7 +139,7 @@ TEST(CompileCache, CrossGlslMissThenHitIsTheSameText) {
 TEST(CompileCache, ChangedSourceEntryTargetPathLanguageOrStageMisses) {
   TempDir dir;
   CompileCache cache(dir.path(), test_toolchain());
-  const ShaderSource base = source(Stage::fragment, kHlslPixel, "p.hlsl");
+  const ShaderSource base = cache_source(Stage::fragment, kHlslPixel, "p.hlsl");
   ASSERT_TRUE(cache.stage(Language::hlsl, base, Target::vulkan));
   ASSERT_TRUE(cache.find_stage(Language::hlsl, base, Target::vulkan));
 
@@ -168,7 +169,7 @@ TEST(CompileCache, ChangedSourceEntryTargetPathLanguageOrStageMisses) {
 
 TEST(CompileCache, AnotherToolchainVersionOrCompileStageFingerprintMisses) {
   TempDir dir;
-  const ShaderSource src = source(Stage::fragment, kGlslFragment, "f.frag");
+  const ShaderSource src = cache_source(Stage::fragment, kGlslFragment, "f.frag");
   {
     CompileCache cache(dir.path(), test_toolchain());
     ASSERT_TRUE(cache.stage(Language::glsl, src, Target::vulkan));
@@ -252,7 +253,7 @@ TEST(CompileCache, LibraryCgIncludesAreRecordedAndChecked) {
 TEST(CompileCache, CorruptTruncatedOrForeignEntriesAreMissesNotErrors) {
   TempDir dir;
   CompileCache cache(dir.path(), test_toolchain());
-  const ShaderSource src = source(Stage::fragment, kGlslFragment, "f.frag");
+  const ShaderSource src = cache_source(Stage::fragment, kGlslFragment, "f.frag");
   auto compiled = cache.stage(Language::glsl, src, Target::vulkan);
   ASSERT_TRUE(compiled);
   const std::vector<fs::path> entries = files_in(dir.path());
@@ -282,7 +283,7 @@ TEST(CompileCache, CorruptTruncatedOrForeignEntriesAreMissesNotErrors) {
   EXPECT_TRUE(cache.find_stage(Language::glsl, src, Target::vulkan));
 
   // A colliding name: another key's (valid) entry under this key's file name.
-  const ShaderSource other = source(Stage::fragment, std::string(kGlslFragment) + "// other\n", "f.frag");
+  const ShaderSource other = cache_source(Stage::fragment, std::string(kGlslFragment) + "// other\n", "f.frag");
   ASSERT_TRUE(cache.stage(Language::glsl, other, Target::vulkan));
   const fs::path other_entry =
       dir.path() / CompileCache::entry_name(cache.stage_key(Language::glsl, other, Target::vulkan), "stage");
@@ -293,7 +294,7 @@ TEST(CompileCache, CorruptTruncatedOrForeignEntriesAreMissesNotErrors) {
 TEST(CompileCache, FailedCompilesAreNotStored) {
   TempDir dir;
   CompileCache cache(dir.path(), test_toolchain());
-  const ShaderSource broken = source(Stage::fragment, "#version 450\nvoid main() { undefined_name; }\n", "b.frag");
+  const ShaderSource broken = cache_source(Stage::fragment, "#version 450\nvoid main() { undefined_name; }\n", "b.frag");
   EXPECT_FALSE(cache.stage(Language::glsl, broken, Target::vulkan));
   EXPECT_FALSE(cache.stage(Language::glsl, broken, Target::vulkan));
   EXPECT_EQ(cache.counts().compiles, 2u);
@@ -302,7 +303,7 @@ TEST(CompileCache, FailedCompilesAreNotStored) {
 
 TEST(CompileCache, ConcurrentWritersOfOneEntryLeaveOneWholeEntry) {
   TempDir dir;
-  const ShaderSource src = source(Stage::fragment, kHlslPixel, "p.hlsl");
+  const ShaderSource src = cache_source(Stage::fragment, kHlslPixel, "p.hlsl");
   auto expected = compile_stage(Language::hlsl, src, Target::vulkan);
   ASSERT_TRUE(expected);
   std::vector<std::thread> threads;
@@ -329,7 +330,7 @@ TEST(CompileCache, AFolderThatCannotBeWrittenMeansNoCachingNotAnError) {
   TempDir dir;
   const std::string not_a_folder = dir.write("file", "x");
   CompileCache cache(fs::path(not_a_folder) / "compile", test_toolchain());
-  const ShaderSource src = source(Stage::fragment, kGlslFragment, "f.frag");
+  const ShaderSource src = cache_source(Stage::fragment, kGlslFragment, "f.frag");
   EXPECT_TRUE(cache.stage(Language::glsl, src, Target::vulkan));
   EXPECT_TRUE(cache.stage(Language::glsl, src, Target::vulkan));
   EXPECT_EQ(cache.counts().compiles, 2u);
@@ -426,7 +427,7 @@ ProgramSource unique_program(const std::string& tag) {
   const std::string vs = "float4x4 mvp;\nfloat4 main(float4 p : POSITION, float3 n : NORMAL, out float3 o : TEXCOORD0) "
                          ": POSITION { o = n; return mul(mvp, p); }\n// " + tag + "\n";
   const std::string ps = std::string(kHlslPixel) + "// " + tag + "\n";
-  return ProgramSource{Language::hlsl, source(Stage::vertex, vs, "unique_vs.hlsl"), source(Stage::fragment, ps, "unique_ps.hlsl")};
+  return ProgramSource{Language::hlsl, cache_source(Stage::vertex, vs, "unique_vs.hlsl"), cache_source(Stage::fragment, ps, "unique_ps.hlsl")};
 }
 
 TEST(StageCache, DiskLayerUnderTheMemoryLayerAndOffSwitch) {

@@ -3,23 +3,19 @@
 
 #include <gtest/gtest.h>
 
+#include "ReflectionLookup.h"
+#include "SourceTree.h"
 #include "compile/Compiler.h"
 #include "compile/SpirvTools.h"
 
 namespace shaderbed {
 namespace {
 
-const std::filesystem::path kShaders = std::filesystem::path(SHADERBED_SOURCE_DIR) / "shaders";
+using test::find_member;
+using test::kShaders;
 
 ShaderSource source(Stage stage, std::string text, std::string path = "test.shader") {
   return ShaderSource{.stage = stage, .path = std::move(path), .text = std::move(text)};
-}
-
-const UniformMember* find_member(const Reflection& r, const std::string& name) {
-  for (const UniformBlock& b : r.uniform_blocks)
-    for (const UniformMember& m : b.members)
-      if (m.name == name) return &m;
-  return nullptr;
 }
 
 TEST(Compile, EveryLibraryShaderCompilesForBothTargets) {

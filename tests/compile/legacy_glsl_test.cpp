@@ -22,14 +22,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-ShaderSource source(Stage stage, std::string text, std::string path) {
+ShaderSource glsl_source(Stage stage, std::string text, std::string path) {
   return ShaderSource{.stage = stage, .path = std::move(path), .text = std::move(text)};
 }
 
 Result<CompiledProgram> compile_glsl(std::string vertex, std::string fragment) {
   return compile_program(ProgramSource{.language = Language::glsl,
-                                       .vertex = source(Stage::vertex, std::move(vertex), "author.vert"),
-                                       .fragment = source(Stage::fragment, std::move(fragment), "author.frag")});
+                                       .vertex = glsl_source(Stage::vertex, std::move(vertex), "author.vert"),
+                                       .fragment = glsl_source(Stage::fragment, std::move(fragment), "author.frag")});
 }
 
 std::set<std::string> member_names(const Reflection& r) {
@@ -154,7 +154,7 @@ TEST(LegacyGlsl, AnUnsupportedBuiltinIsOneErrorNamingItAndItsLine) {
 // #version: that message, at the directive's line, not the "'varying' : Reserved word" after it.
 TEST(LegacyGlsl, GlslangsVersionErrorIsTheOneReported) {
   auto module = compile_stage(Language::glsl,
-                              source(Stage::vertex, "// old\n#version 120\nvarying vec3 n;\nvoid main() { n = gl_Normal; }\n",
+                              glsl_source(Stage::vertex, "// old\n#version 120\nvarying vec3 n;\nvoid main() { n = gl_Normal; }\n",
                                      "old.vert"),
                               Target::vulkan);
   ASSERT_FALSE(module);
@@ -212,8 +212,8 @@ TEST(RelaxedGlsl, OnlyShadersWithLooseUniformsTakeTheRelaxedRules) {
 // stage, with one more in the vertex shader, they still meet.
 TEST(GlslVaryings, FragmentInputsTakeTheLocationOfTheVertexOutputOfTheirName) {
   auto sources = assign_varying_locations(
-      source(Stage::vertex, "out vec3 Normal;\nout vec2 Extra;\nsmooth out vec3 FragPos, Tint;\nout mat3 Basis;\n", "v"),
-      source(Stage::fragment, "in vec3 FragPos;\nin mat3 Basis;\nin vec3 Normal;\nin vec3 Tint;\n", "f"));
+      glsl_source(Stage::vertex, "out vec3 Normal;\nout vec2 Extra;\nsmooth out vec3 FragPos, Tint;\nout mat3 Basis;\n", "v"),
+      glsl_source(Stage::fragment, "in vec3 FragPos;\nin mat3 Basis;\nin vec3 Normal;\nin vec3 Tint;\n", "f"));
   ASSERT_TRUE(sources) << sources.error().to_string();
   EXPECT_EQ(sources->vertex,
             "layout(location = 0) out vec3 Normal;\nlayout(location = 1) out vec2 Extra;\n"
@@ -235,7 +235,7 @@ TEST(GlslVaryings, ShadersWithLocationsEverywhereAreUnchanged) {
     EXPECT_FALSE(needs_relaxed_vulkan_rules(text.str())) << name;
     ++checked;
     const Stage stage = name.ends_with(".vert") ? Stage::vertex : Stage::fragment;
-    auto same = assign_varying_locations(source(stage, text.str(), name), source(stage, text.str(), name));
+    auto same = assign_varying_locations(glsl_source(stage, text.str(), name), glsl_source(stage, text.str(), name));
     ASSERT_TRUE(same) << same.error().to_string();
     EXPECT_EQ(stage == Stage::vertex ? same->vertex : same->fragment, text.str()) << name;
   }

@@ -53,7 +53,7 @@ CompiledProgram compile_back(const PortedProgram& ported, PortTarget target) {
   return compiled ? *compiled : CompiledProgram{};
 }
 
-std::vector<std::string> member_names(const Reflection& r) {
+std::vector<std::string> member_list(const Reflection& r) {
   std::vector<std::string> names;
   for (const UniformBlock& b : r.uniform_blocks)
     for (const UniformMember& m : b.members) names.push_back(m.name);
@@ -102,8 +102,8 @@ TEST(PortSource, HlslToGlsl450KeepsTheNamesInANamedBlock) {
   EXPECT_TRUE(has_change(p, "renamed", "'InVertex.Position' -> 'Position'")) << all_changes(p);
 
   const CompiledProgram back = compile_back(p, PortTarget::glsl);
-  EXPECT_EQ(member_names(back.vertex.reflection), std::vector<std::string>{"Transform"});
-  EXPECT_EQ(member_names(back.fragment.reflection),
+  EXPECT_EQ(member_list(back.vertex.reflection), std::vector<std::string>{"Transform"});
+  EXPECT_EQ(member_list(back.fragment.reflection),
             (std::vector<std::string>{"LightVector", "EyePosition", "DiffuseColor", "SpecularColor"}));
   EXPECT_TRUE(back.native_glsl_skip_reason.empty()) << back.native_glsl_skip_reason;
 }
@@ -121,7 +121,7 @@ TEST(PortSource, HlslToGlsl330FlattensBlocksAndTransposesRowMajorMatrices) {
   EXPECT_TRUE(has_change(p, "matrix", "transpose(Transform)")) << all_changes(p);
 
   const CompiledProgram back = compile_back(p, PortTarget::glsl_gl);
-  EXPECT_EQ(member_names(back.vertex.reflection), std::vector<std::string>{"Transform"});
+  EXPECT_EQ(member_list(back.vertex.reflection), std::vector<std::string>{"Transform"});
   EXPECT_FALSE(back.fragment_cross_glsl.empty());
 }
 
@@ -139,7 +139,7 @@ TEST(PortSource, GlslToHlslGivesInputsTheSemanticsShaderbedPlaces) {
 
   const CompiledProgram back = compile_back(p, PortTarget::hlsl);
   ASSERT_EQ(back.vertex.reflection.inputs.size(), 2u);
-  EXPECT_EQ(member_names(back.fragment.reflection),
+  EXPECT_EQ(member_list(back.fragment.reflection),
             (std::vector<std::string>{"lightPos", "viewPos", "lightColor", "ambientColor", "objectColor",
                                       "specularColor", "shininess"}));
 }

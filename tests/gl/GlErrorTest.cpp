@@ -14,7 +14,7 @@ layout(location = 0) out vec4 colour;
 void main() { colour = vec4(1.0); }
 )";
 
-Result<RenderOutput> render(const CompiledProgram& program, ShaderPath path, const Mesh& mesh, int width = 16,
+Result<RenderOutput> render_small(const CompiledProgram& program, ShaderPath path, const Mesh& mesh, int width = 16,
                             int height = 16) {
   auto backend = gl_backend();
   if (!backend) return std::unexpected(backend.error());
@@ -37,7 +37,7 @@ TEST(GlErrors, BackendDescribesItself) {
 TEST(GlErrors, RejectsEmptyAndHugeTargets) {
   const CompiledProgram program = native_glsl_only(kPassThroughVertex, kWhite);
   for (auto [w, h] : {std::pair{0, 16}, std::pair{16, -1}, std::pair{1 << 20, 16}}) {
-    auto out = render(program, ShaderPath::native_glsl, ndc_rectangle(-1, -1, 1, 1), w, h);
+    auto out = render_small(program, ShaderPath::native_glsl, ndc_rectangle(-1, -1, 1, 1), w, h);
     ASSERT_FALSE(out) << w << "x" << h;
     EXPECT_EQ(out.error().stage, "gl");
   }
@@ -46,7 +46,7 @@ TEST(GlErrors, RejectsEmptyAndHugeTargets) {
 TEST(GlErrors, RejectsIndicesPastTheVertices) {
   Mesh mesh = ndc_rectangle(-1, -1, 1, 1);
   mesh.indices.back() = 99;
-  auto out = render(native_glsl_only(kPassThroughVertex, kWhite), ShaderPath::native_glsl, mesh);
+  auto out = render_small(native_glsl_only(kPassThroughVertex, kWhite), ShaderPath::native_glsl, mesh);
   ASSERT_FALSE(out);
   EXPECT_NE(out.error().message.find("99"), std::string::npos) << out.error().to_string();
 }
@@ -54,13 +54,13 @@ TEST(GlErrors, RejectsIndicesPastTheVertices) {
 TEST(GlErrors, RejectsPartialTriangles) {
   Mesh mesh = ndc_rectangle(-1, -1, 1, 1);
   mesh.indices.pop_back();
-  EXPECT_FALSE(render(native_glsl_only(kPassThroughVertex, kWhite), ShaderPath::native_glsl, mesh));
+  EXPECT_FALSE(render_small(native_glsl_only(kPassThroughVertex, kWhite), ShaderPath::native_glsl, mesh));
 }
 
 TEST(GlErrors, NoNativePathForHlsl) {
   CompiledProgram program = native_glsl_only(kPassThroughVertex, kWhite);
   program.language = Language::hlsl;
-  auto out = render(program, ShaderPath::native_glsl, ndc_rectangle(-1, -1, 1, 1));
+  auto out = render_small(program, ShaderPath::native_glsl, ndc_rectangle(-1, -1, 1, 1));
   ASSERT_FALSE(out);
   EXPECT_EQ(out.error().backend, "gl");
 }
@@ -68,11 +68,11 @@ TEST(GlErrors, NoNativePathForHlsl) {
 TEST(GlErrors, MissingSpirvIsAnError) {
   // native_glsl_only fills no SPIR-V and no cross GLSL.
   const CompiledProgram program = native_glsl_only(kPassThroughVertex, kWhite, "v.vert", "f.frag");
-  auto spirv = render(program, ShaderPath::spirv, ndc_rectangle(-1, -1, 1, 1));
+  auto spirv = render_small(program, ShaderPath::spirv, ndc_rectangle(-1, -1, 1, 1));
   ASSERT_FALSE(spirv);
   EXPECT_EQ(spirv.error().file, "v.vert");
   EXPECT_NE(spirv.error().message.find("spirv path"), std::string::npos) << spirv.error().to_string();
-  auto cross = render(program, ShaderPath::cross_glsl, ndc_rectangle(-1, -1, 1, 1));
+  auto cross = render_small(program, ShaderPath::cross_glsl, ndc_rectangle(-1, -1, 1, 1));
   ASSERT_FALSE(cross);
   EXPECT_NE(cross.error().message.find("cross path"), std::string::npos) << cross.error().to_string();
 }
@@ -84,7 +84,7 @@ layout(location = 1) in vec3 wobble;
 void main() { gl_Position = vec4(position + wobble, 1.0); }
 )",
                                                    kWhite);
-  auto out = render(program, ShaderPath::native_glsl, ndc_rectangle(-1, -1, 1, 1));
+  auto out = render_small(program, ShaderPath::native_glsl, ndc_rectangle(-1, -1, 1, 1));
   ASSERT_FALSE(out);
   EXPECT_NE(out.error().message.find("wobble"), std::string::npos) << out.error().to_string();
 }
@@ -95,15 +95,15 @@ layout(binding = 0) uniform sampler2D albedo;
 layout(location = 0) out vec4 colour;
 void main() { colour = texture(albedo, vec2(0.5)); }
 )");
-  auto out = render(program, ShaderPath::native_glsl, ndc_rectangle(-1, -1, 1, 1));
+  auto out = render_small(program, ShaderPath::native_glsl, ndc_rectangle(-1, -1, 1, 1));
   ASSERT_FALSE(out);
   EXPECT_NE(out.error().message.find("albedo"), std::string::npos) << out.error().to_string();
 }
 
 TEST(GlErrors, DrawsAgainAfterAFailure) {
   const CompiledProgram broken = native_glsl_only(kPassThroughVertex, "#version 450\nvoid main() { nope; }\n");
-  ASSERT_FALSE(render(broken, ShaderPath::native_glsl, ndc_rectangle(-1, -1, 1, 1)));
-  auto out = render(native_glsl_only(kPassThroughVertex, kWhite), ShaderPath::native_glsl,
+  ASSERT_FALSE(render_small(broken, ShaderPath::native_glsl, ndc_rectangle(-1, -1, 1, 1)));
+  auto out = render_small(native_glsl_only(kPassThroughVertex, kWhite), ShaderPath::native_glsl,
                     ndc_rectangle(-1, -1, 1, 1), 8, 4);
   ASSERT_TRUE(out) << out.error().to_string();
   EXPECT_EQ(coverage_count(out->image), 8 * 4);

@@ -10,14 +10,14 @@
 namespace shaderbed::gl_test {
 namespace {
 
-constexpr int kWidth = 64;
-constexpr int kHeight = 32;
+constexpr int kNativeWidth = 64;
+constexpr int kNativeHeight = 32;
 
 Result<RenderOutput> draw_native(const CompiledProgram& program, const Mesh& mesh, const UniformResolver& uniforms) {
   auto backend = gl_backend();
   if (!backend) return std::unexpected(backend.error());
   return (*backend)->render(DrawJob{.program = program, .path = ShaderPath::native_glsl, .mesh = mesh,
-                                    .uniforms = uniforms, .width = kWidth, .height = kHeight});
+                                    .uniforms = uniforms, .width = kNativeWidth, .height = kNativeHeight});
 }
 
 void expect_pixel(const Image& image, int x, int y, float r, float g, float b, float a) {

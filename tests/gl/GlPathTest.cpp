@@ -26,18 +26,6 @@ void main() {
 }
 )";
 
-const char* const kTransformVertex = R"(#version 450
-layout(location = 0) in vec3 position;
-layout(binding = 0, std140) uniform Transform { mat4 clip_from_object; };
-void main() { gl_Position = clip_from_object * vec4(position, 1.0); }
-)";
-
-const char* const kMaterialFragment = R"(#version 450
-layout(binding = 1, std140) uniform Material { vec4 tint; float scale; };
-layout(location = 0) out vec4 colour;
-void main() { colour = tint * scale; }
-)";
-
 const char* const kTexcoordVertex = R"(#version 450
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec2 texcoord;

@@ -10,25 +10,13 @@
 namespace shaderbed::gl_test {
 namespace {
 
-const char* const kMaterialFragment = R"(#version 450
-layout(binding = 1, std140) uniform Material { vec4 tint; float scale; };
-layout(location = 0) out vec4 colour;
-void main() { colour = tint * scale; }
-)";
-
-const char* const kTransformVertex = R"(#version 450
-layout(location = 0) in vec3 position;
-layout(binding = 0, std140) uniform Transform { mat4 clip_from_object; };
-void main() { gl_Position = clip_from_object * vec4(position, 1.0); }
-)";
-
 const MapResolver kValues({
     {"clip_from_object", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}},
     {"tint", {1, 1, 1, 1}},
     {"scale", {1}},
 });
 
-Result<RenderOutput> render(const CompiledProgram& program, ShaderPath path) {
+Result<RenderOutput> render_reflected(const CompiledProgram& program, ShaderPath path) {
   auto backend = gl_backend();
   if (!backend) return std::unexpected(backend.error());
   const Mesh mesh = ndc_rectangle(-1, -1, 1, 1);
@@ -45,11 +33,11 @@ UniformMember& member_named(UniformBlock& block, const std::string& name) {
 TEST(GlReflection, CrossGlslLayoutThatDisagreesWithReflectionIsAnError) {
   auto program = compile_glsl(kTransformVertex, kMaterialFragment);
   ASSERT_TRUE(program) << program.error().to_string();
-  ASSERT_TRUE(render(*program, ShaderPath::cross_glsl)) << "the untouched program must draw";
+  ASSERT_TRUE(render_reflected(*program, ShaderPath::cross_glsl)) << "the untouched program must draw";
 
   ASSERT_EQ(program->fragment_gl.reflection.uniform_blocks.size(), 1u);
   member_named(program->fragment_gl.reflection.uniform_blocks[0], "scale").offset += 4;
-  auto out = render(*program, ShaderPath::cross_glsl);
+  auto out = render_reflected(*program, ShaderPath::cross_glsl);
   ASSERT_FALSE(out);
   EXPECT_NE(out.error().message.find("'scale'"), std::string::npos) << out.error().to_string();
   EXPECT_NE(out.error().message.find("offset"), std::string::npos) << out.error().to_string();
@@ -61,7 +49,7 @@ TEST(GlReflection, TwoDifferentBlocksOnOneBindingIsAnError) {
   ASSERT_TRUE(program) << program.error().to_string();
   // As if both stages' blocks had been given the same GL binding.
   program->fragment_gl.reflection.uniform_blocks[0].binding = program->vertex_gl.reflection.uniform_blocks[0].binding;
-  auto out = render(*program, ShaderPath::spirv);
+  auto out = render_reflected(*program, ShaderPath::spirv);
   ASSERT_FALSE(out);
   EXPECT_NE(out.error().message.find("Transform"), std::string::npos) << out.error().to_string();
   EXPECT_NE(out.error().message.find("Material"), std::string::npos) << out.error().to_string();
@@ -72,7 +60,7 @@ TEST(GlReflection, WrongEntryPointIsAnErrorOnTheSpirvPath) {
   auto program = compile_glsl(kTransformVertex, kMaterialFragment);
   ASSERT_TRUE(program) << program.error().to_string();
   program->fragment_gl.entry_point = "not_there";
-  auto out = render(*program, ShaderPath::spirv);
+  auto out = render_reflected(*program, ShaderPath::spirv);
   ASSERT_FALSE(out);
   EXPECT_EQ(out.error().file, "test.frag");
   EXPECT_NE(out.error().message.find("not_there"), std::string::npos) << out.error().to_string();

@@ -61,4 +61,18 @@ extern const char* const kPassThroughVertex;
 // Covered pixels of an image.
 int coverage_count(const Image& image);
 
+// A vertex shader with a Transform block (binding 0) and a fragment shader with a Material
+// block (binding 1): uniforms that must reach the shader on every path.
+inline const char* const kTransformVertex = R"(#version 450
+layout(location = 0) in vec3 position;
+layout(binding = 0, std140) uniform Transform { mat4 clip_from_object; };
+void main() { gl_Position = clip_from_object * vec4(position, 1.0); }
+)";
+
+inline const char* const kMaterialFragment = R"(#version 450
+layout(binding = 1, std140) uniform Material { vec4 tint; float scale; };
+layout(location = 0) out vec4 colour;
+void main() { colour = tint * scale; }
+)";
+
 }  // namespace shaderbed::gl_test

@@ -23,11 +23,11 @@ namespace {
 
 using namespace texture_probes;
 
-struct Probe {
+struct UvProbe {
   float u, v = 0.5f, w = 0.5f;
 };
 
-Result<RenderOutput> render(const CompiledProgram& program, ShaderPath path, const UniformResolver& uniforms,
+Result<RenderOutput> render_textured(const CompiledProgram& program, ShaderPath path, const UniformResolver& uniforms,
                             const TextureResolver* textures, int width, int height) {
   auto backend = gl_backend();
   if (!backend) return std::unexpected(backend.error());
@@ -39,7 +39,7 @@ Result<RenderOutput> render(const CompiledProgram& program, ShaderPath path, con
 // The sampled value at each probe, from one draw of `program` (which reads the
 // coordinates from the member `coords_member` of a vec4 array).
 Result<std::vector<float>> sample(const CompiledProgram& program, ShaderPath path, const TextureResolver& textures,
-                                  const std::vector<Probe>& probes, const std::string& coords_member = "coords") {
+                                  const std::vector<UvProbe>& probes, const std::string& coords_member = "coords") {
   if (probes.size() > size_t(kMaxProbes)) return fail("test", "too many probes");
   std::vector<float> coords(size_t(kMaxProbes) * 4, 0.0f);
   for (size_t p = 0; p < probes.size(); ++p) {
@@ -48,14 +48,14 @@ Result<std::vector<float>> sample(const CompiledProgram& program, ShaderPath pat
     coords[p * 4 + 2] = probes[p].w;
   }
   const MapResolver uniforms({{coords_member, coords}});
-  auto out = render(program, path, uniforms, &textures, int(probes.size()), 1);
+  auto out = render_textured(program, path, uniforms, &textures, int(probes.size()), 1);
   if (!out) return std::unexpected(out.error());
   std::vector<float> values;
   for (int x = 0; x < int(probes.size()); ++x) values.push_back(out->image.pixel(x, 0)[0]);
   return values;
 }
 
-Result<std::vector<float>> sample_glsl(ShaderPath path, const Texture& texture, const std::vector<Probe>& probes) {
+Result<std::vector<float>> sample_glsl(ShaderPath path, const Texture& texture, const std::vector<UvProbe>& probes) {
   auto program = compile_glsl(kPassThroughVertex, probe_fragment_shader(texture.dimensions));
   if (!program) return std::unexpected(program.error());
   const MapTextureResolver textures({{"lut", texture}});
@@ -69,7 +69,7 @@ const Texture kTexture2D = make_texture("lut2d", 2, 4, 2, 1, {0.1f, 0.7f, 0.35f,
 class GlLookupTexture : public ::testing::TestWithParam<ShaderPath> {};
 
 TEST_P(GlLookupTexture, TexelCentresReturnTexelsExactly2D) {
-  std::vector<Probe> probes;
+  std::vector<UvProbe> probes;
   for (int j = 0; j < 2; ++j)
     for (int i = 0; i < 4; ++i) probes.push_back({(i + 0.5f) / 4, (j + 0.5f) / 2});
   auto values = sample_glsl(GetParam(), kTexture2D, probes);
@@ -79,7 +79,7 @@ TEST_P(GlLookupTexture, TexelCentresReturnTexelsExactly2D) {
 
 TEST_P(GlLookupTexture, HalfwayBetweenTexelCentresIsTheMean2D) {
   const Texture& t = kTexture2D;
-  const std::vector<Probe> probes = {{0.25f, 0.25f}, {0.75f, 0.75f}, {0.125f, 0.5f}, {0.5f, 0.5f}};
+  const std::vector<UvProbe> probes = {{0.25f, 0.25f}, {0.75f, 0.75f}, {0.125f, 0.5f}, {0.5f, 0.5f}};
   const std::vector<double> expected = {
       (texel(t, 0, 0) + texel(t, 1, 0)) / 2.0,
       (texel(t, 2, 1) + texel(t, 3, 1)) / 2.0,
@@ -93,7 +93,7 @@ TEST_P(GlLookupTexture, HalfwayBetweenTexelCentresIsTheMean2D) {
 
 TEST_P(GlLookupTexture, OutsideTheUnitSquareClampsToTheEdgeTexel2D) {
   const Texture& t = kTexture2D;
-  const std::vector<Probe> probes = {{-0.5f, -0.5f}, {1.5f, 0.25f}, {0.375f, 2.0f}, {-3.0f, 5.0f}, {7.0f, -7.0f}};
+  const std::vector<UvProbe> probes = {{-0.5f, -0.5f}, {1.5f, 0.25f}, {0.375f, 2.0f}, {-3.0f, 5.0f}, {7.0f, -7.0f}};
   const std::vector<float> expected = {texel(t, 0, 0), texel(t, 3, 0), texel(t, 1, 1), texel(t, 0, 1), texel(t, 3, 0)};
   auto values = sample_glsl(GetParam(), t, probes);
   ASSERT_TRUE(values) << values.error().to_string();
@@ -108,7 +108,7 @@ TEST_P(GlLookupTexture, ThreeDimensionalTextureFiltersTrilinearly) {
   for (int k = 0; k < 2; ++k)
     for (int j = 0; j < 2; ++j)
       for (int i = 1; i < 3; ++i) cell_mean += texel(t, i, j, k) / 8.0;
-  const std::vector<Probe> probes = {
+  const std::vector<UvProbe> probes = {
       {0.125f, 0.25f, 0.25f}, {0.625f, 0.75f, 0.75f}, {0.875f, 0.25f, 0.75f}, {0.5f, 0.5f, 0.5f}, {-1.0f, 2.0f, 9.0f}};
   auto values = sample_glsl(GetParam(), t, probes);
   ASSERT_TRUE(values) << values.error().to_string();
@@ -121,7 +121,7 @@ TEST_P(GlLookupTexture, ThreeDimensionalTextureFiltersTrilinearly) {
 
 TEST_P(GlLookupTexture, OneDimensionalTextureFiltersLinearly) {
   const Texture t = make_texture("ramp", 1, 8, 1, 1, {0.1f, 0.7f, 0.35f, 0.9f, 0.45f, 0.2f, 0.65f, 0.05f});
-  const std::vector<Probe> probes = {{0.0625f}, {0.5625f}, {0.25f}, {0.875f}, {-2.0f}, {3.0f}};
+  const std::vector<UvProbe> probes = {{0.0625f}, {0.5625f}, {0.25f}, {0.875f}, {-2.0f}, {3.0f}};
   auto values = sample_glsl(GetParam(), t, probes);
   ASSERT_TRUE(values) << values.error().to_string();
   EXPECT_EQ((*values)[0], texel(t, 0));
@@ -148,7 +148,7 @@ void main() {
       {"second", make_texture("second", 2, 2, 2, 1, {-1.0f, -2.0f, -3.0f, -4.0f})},
       {"third", make_texture("third", 1, 2, 1, 1, {0.25f, 0.5f})},
   });
-  auto out = render(*program, GetParam(), MapResolver{}, &textures, 4, 4);
+  auto out = render_textured(*program, GetParam(), MapResolver{}, &textures, 4, 4);
   ASSERT_TRUE(out) << out.error().to_string();
   const float* p = out->image.pixel(2, 2);
   EXPECT_EQ(p[0], 2.0f);
@@ -177,7 +177,7 @@ TEST_P(GlLookupTexture, SamplersOfBothStagesGetTheirTextures) {
       {"ramp", make_texture("ramp", 1, 2, 1, 1, {0.25f, 0.5f})},
       {"first", make_texture("first", 2, 2, 2, 1, {1.0f, 2.0f, 3.0f, 4.0f})},
   });
-  auto out = render(*program, GetParam(), MapResolver{}, &textures, 4, 4);
+  auto out = render_textured(*program, GetParam(), MapResolver{}, &textures, 4, 4);
   if (!out && out.error().message.find("both have uniform location") != std::string::npos)
     GTEST_SKIP() << "known compile-stage gap: glslang numbers each stage's sampler locations from 0 "
                     "(needs a per-stage uniform location base): "
@@ -192,7 +192,7 @@ Result<RenderOutput> render_lut_program(ShaderPath path, const TextureResolver* 
   auto program = compile_glsl(kPassThroughVertex, probe_fragment_shader(2));
   if (!program) return std::unexpected(program.error());
   const MapResolver uniforms({{"coords", std::vector<float>(size_t(kMaxProbes) * 4, 0.5f)}});
-  return render(*program, path, uniforms, textures, 4, 1);
+  return render_textured(*program, path, uniforms, textures, 4, 1);
 }
 
 TEST_P(GlLookupTexture, MissingTextureIsAnErrorNamingTheSampler) {
@@ -246,7 +246,7 @@ TEST_P(GlLookupTexture, FilteringErrorAgainstExactLinearInterpolation) {
     auto program = compile_glsl(kPassThroughVertex, measuring_fragment_shader(t.dimensions));
     ASSERT_TRUE(program) << program.error().to_string();
     const MapTextureResolver resolver({{"lut", t}});
-    auto out = render(*program, GetParam(), MapResolver{}, &resolver, size, size);
+    auto out = render_textured(*program, GetParam(), MapResolver{}, &resolver, size, size);
     ASSERT_TRUE(out) << out.error().to_string();
     double max_abs = 0, sum = 0;
     for (int y = 0; y < size; ++y)
@@ -323,7 +323,7 @@ void main() {
       {"second", make_texture("second", 2, 1, 1, 1, {-2.5f})},
       {"third", make_texture("third", 1, 1, 1, 1, {7.0f})},
   });
-  auto out = render(program, ShaderPath::native_glsl, MapResolver{}, &textures, 4, 4);
+  auto out = render_textured(program, ShaderPath::native_glsl, MapResolver{}, &textures, 4, 4);
   ASSERT_TRUE(out) << out.error().to_string();
   const float* p = out->image.pixel(1, 1);
   EXPECT_EQ(p[0], 1.5f);
@@ -338,7 +338,7 @@ layout(location = 0) out vec4 colour;
 void main() { colour = texture(luts[0], vec2(0.5)) + texture(luts[1], vec2(0.5)); }
 )");
   const MapTextureResolver textures({{"luts", kTexture2D}});
-  auto out = render(program, ShaderPath::native_glsl, MapResolver{}, &textures, 4, 4);
+  auto out = render_textured(program, ShaderPath::native_glsl, MapResolver{}, &textures, 4, 4);
   ASSERT_FALSE(out);
   EXPECT_NE(out.error().message.find("'luts' is an array"), std::string::npos) << out.error().to_string();
 }
@@ -351,7 +351,7 @@ TEST(GlLookupTextureCross, UnitThatDisagreesWithReflectionIsAnError) {
   program->fragment_gl.reflection.samplers[0].binding += 5;
   const MapTextureResolver textures({{"lut", kTexture2D}});
   const MapResolver uniforms({{"coords", std::vector<float>(size_t(kMaxProbes) * 4, 0.5f)}});
-  auto out = render(*program, ShaderPath::cross_glsl, uniforms, &textures, 4, 1);
+  auto out = render_textured(*program, ShaderPath::cross_glsl, uniforms, &textures, 4, 1);
   ASSERT_FALSE(out);
   EXPECT_NE(out.error().message.find("layout(binding)"), std::string::npos) << out.error().to_string();
   EXPECT_NE(out.error().message.find("cross path"), std::string::npos) << out.error().to_string();
@@ -378,7 +378,7 @@ TEST(GlLookupTextureSpirv, SamplersOfTwoStagesOnOneUniformLocationIsAnError) {
       {"ramp", make_texture("ramp", 1, 2, 1, 1, {0.25f, 0.5f})},
       {"first", make_texture("first", 2, 2, 2, 1, {1.0f, 2.0f, 3.0f, 4.0f})},
   });
-  auto out = render(*program, ShaderPath::spirv, MapResolver{}, &textures, 4, 4);
+  auto out = render_textured(*program, ShaderPath::spirv, MapResolver{}, &textures, 4, 4);
   ASSERT_FALSE(out) << "GL would silently link 'ramp' and 'first' as one uniform";
   const std::string text = out.error().to_string();
   EXPECT_NE(text.find("'ramp'"), std::string::npos) << text;
@@ -397,7 +397,7 @@ void main() { colour = texture(first, vec2(0.5)) + texture(second, vec3(0.5)); }
   ASSERT_EQ(program->fragment_gl.reflection.samplers.size(), 2u);
   program->fragment_gl.reflection.samplers[1].binding = program->fragment_gl.reflection.samplers[0].binding;
   const MapTextureResolver textures({{"first", kTexture2D}, {"second", make_texture("v", 3, 1, 1, 1, {1.0f})}});
-  auto out = render(*program, ShaderPath::spirv, MapResolver{}, &textures, 4, 4);
+  auto out = render_textured(*program, ShaderPath::spirv, MapResolver{}, &textures, 4, 4);
   ASSERT_FALSE(out);
   const std::string text = out.error().to_string();
   EXPECT_NE(text.find("'first'"), std::string::npos) << text;

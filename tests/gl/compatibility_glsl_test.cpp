@@ -20,7 +20,7 @@ Result<CompiledProgram> compile_legacy(const std::string& vertex, const std::str
                                        .fragment = {.stage = Stage::fragment, .path = "legacy.frag", .text = fragment}});
 }
 
-Result<RenderOutput> draw(const CompiledProgram& program, ShaderPath path, const Mesh& mesh,
+Result<RenderOutput> draw_compatibility(const CompiledProgram& program, ShaderPath path, const Mesh& mesh,
                           const UniformResolver& uniforms) {
   auto backend = gl_backend();
   if (!backend) return std::unexpected(backend.error());
@@ -57,7 +57,7 @@ TEST_P(CompatibilityGlsl, FixedFunctionStateReachesTheShaderAsTheCaseBindsIt) {
       {"gl_FrontMaterial.diffuse", {0.5f, 0.5f, 0.5f, 0.75f}},
       {"gl_FrontMaterial.shininess", {2.0f}},
   });
-  auto out = draw(*program, GetParam(), ndc_rectangle(-1, -1, 1, 1, 0.25f), uniforms);
+  auto out = draw_compatibility(*program, GetParam(), ndc_rectangle(-1, -1, 1, 1, 0.25f), uniforms);
   ASSERT_TRUE(out) << out.error().to_string();
   EXPECT_EQ(coverage_count(out->image), kSize * kSize);
   const float* p = out->image.pixel(kSize / 2, kSize / 2);
@@ -74,7 +74,7 @@ TEST_P(CompatibilityGlsl, UnboundLightStateIsAnErrorNamingTheLegacyUniform) {
   ASSERT_TRUE(program) << program.error().to_string();
   const MapResolver uniforms({{"gl_ModelViewMatrix", kIdentity}, {"gl_ProjectionMatrix", kIdentity},
                               {"gl_ModelViewProjectionMatrix", kIdentity}});
-  auto out = draw(*program, GetParam(), ndc_rectangle(-1, -1, 1, 1), uniforms);
+  auto out = draw_compatibility(*program, GetParam(), ndc_rectangle(-1, -1, 1, 1), uniforms);
   ASSERT_FALSE(out);
   EXPECT_NE(out.error().message.find("gl_LightSource[0].specular"), std::string::npos) << out.error().message;
 }
@@ -93,11 +93,11 @@ TEST(VulkanGlslOnGl, TheNativePathIsSkippedWithTheReasonAndTheSpirvPathDraws) {
       "void main() { result = colour; }\n");
   ASSERT_TRUE(program) << program.error().to_string();
   const MapResolver uniforms({{"colour", {0.25f, 0.5f, 0.75f, 1.0f}}});
-  auto native = draw(*program, ShaderPath::native_glsl, ndc_rectangle(-1, -1, 1, 1), uniforms);
+  auto native = draw_compatibility(*program, ShaderPath::native_glsl, ndc_rectangle(-1, -1, 1, 1), uniforms);
   ASSERT_FALSE(native);
   EXPECT_TRUE(native.error().skipped) << native.error().to_string();
   EXPECT_NE(native.error().message.find("layout(set) at line 2"), std::string::npos) << native.error().message;
-  auto spirv = draw(*program, ShaderPath::spirv, ndc_rectangle(-1, -1, 1, 1), uniforms);
+  auto spirv = draw_compatibility(*program, ShaderPath::spirv, ndc_rectangle(-1, -1, 1, 1), uniforms);
   ASSERT_TRUE(spirv) << spirv.error().to_string();
   EXPECT_FLOAT_EQ(spirv->image.pixel(4, 4)[1], 0.5f);
 }
@@ -117,7 +117,7 @@ TEST(VulkanGlslOnGl, PushConstantsSkipEveryGlPath) {
   EXPECT_FALSE(program->fragment.spirv.empty());
   const MapResolver uniforms({{"colour", {0.25f, 0.5f, 0.75f, 1.0f}}});
   for (ShaderPath path : {ShaderPath::native_glsl, ShaderPath::spirv, ShaderPath::cross_glsl}) {
-    auto out = draw(*program, path, ndc_rectangle(-1, -1, 1, 1), uniforms);
+    auto out = draw_compatibility(*program, path, ndc_rectangle(-1, -1, 1, 1), uniforms);
     ASSERT_FALSE(out) << to_string(path);
     EXPECT_TRUE(out.error().skipped) << out.error().to_string();
     EXPECT_NE(out.error().message.find("push_constant"), std::string::npos) << out.error().message;

@@ -3,18 +3,12 @@
 // are written to a temporary directory.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
-#include <filesystem>
-#include <fstream>
-
+#include "TempDir.h"
 #include "compile/Compiler.h"
 #include "stats/nir/NirDump.h"
 
 namespace shaderbed {
 namespace {
-
-namespace fs = std::filesystem;
 
 const char* kVertex = R"(#version 450
 layout(location = 0) in vec3 position;
@@ -34,14 +28,9 @@ void main() { colour = texture(lut, vec2(0.25, 0.75)); }
 )";
 
 Result<CompiledProgram> program_from(const std::string& name, const char* fragment) {
-  // Per process: ctest runs these tests in parallel processes.
-  const fs::path dir = fs::temp_directory_path() / ("shaderbed-nir-test-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const fs::path vs = dir / (name + ".vert"), fs_ = dir / (name + ".frag");
-  std::ofstream(vs) << kVertex;
-  std::ofstream(fs_) << fragment;
-  auto v = load_shader_source(Stage::vertex, vs.string());
-  auto f = load_shader_source(Stage::fragment, fs_.string());
+  static const test::TempDir dir("nir");   // kept to the end: the NIR helper reads the files again
+  auto v = load_shader_source(Stage::vertex, dir.write(name + ".vert", kVertex));
+  auto f = load_shader_source(Stage::fragment, dir.write(name + ".frag", fragment));
   if (!v || !f) return std::unexpected(!v ? v.error() : f.error());
   return compile_program(ProgramSource{Language::glsl, std::move(*v), std::move(*f)});
 }

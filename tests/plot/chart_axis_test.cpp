@@ -5,13 +5,14 @@
 
 #include <gtest/gtest.h>
 
+#include "NonFinite.h"
 #include "plot/ChartAxis.h"
 
 namespace shaderbed {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using test::kNaN;
+using test::kInf;
 
 TEST(ChartAxis, AutomaticGoesLogOnlyPastTwoDecades) {
   EXPECT_TRUE(plan_axis(std::vector{0.01, 0.5, 3.0}, AxisScale::automatic, "x").log);   // 2.5 decades

@@ -6,14 +6,15 @@
 
 #include <gtest/gtest.h>
 
+#include "NonFinite.h"
 #include "plot/ParetoFront.h"
 
 namespace shaderbed {
 namespace {
 
 using Indices = std::vector<std::size_t>;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using test::kNaN;
+using test::kInf;
 
 ParetoFront front_of(const std::vector<CostError>& points) { return find_pareto_front(points); }
 

@@ -16,6 +16,7 @@
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
+#include "NonFinite.h"
 #include "plot/Gnuplot.h"
 #include "plot/SpeedErrorChart.h"
 
@@ -23,7 +24,7 @@ namespace shaderbed {
 namespace {
 
 namespace fs = std::filesystem;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using test::kNaN;
 
 fs::path output_dir() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();

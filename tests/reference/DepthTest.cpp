@@ -10,13 +10,13 @@
 namespace reference {
 namespace {
 
-constexpr int size = 16;
+constexpr int depth_size = 16;
 
 std::vector<glm::dvec4> two_overlapping_triangles(double first_depth, double second_depth) {
   using testing::clip_from_window;
-  return {clip_from_window(1, 1, size, size, first_depth),    clip_from_window(15, 1, size, size, first_depth),
-          clip_from_window(1, 15, size, size, first_depth),   clip_from_window(3, 3, size, size, second_depth),
-          clip_from_window(15, 15, size, size, second_depth), clip_from_window(1, 15, size, size, second_depth)};
+  return {clip_from_window(1, 1, depth_size, depth_size, first_depth),    clip_from_window(15, 1, depth_size, depth_size, first_depth),
+          clip_from_window(1, 15, depth_size, depth_size, first_depth),   clip_from_window(3, 3, depth_size, depth_size, second_depth),
+          clip_from_window(15, 15, depth_size, depth_size, second_depth), clip_from_window(1, 15, depth_size, depth_size, second_depth)};
 }
 
 TEST(Depth, NearerTriangleWinsInEitherOrder) {
@@ -24,7 +24,7 @@ TEST(Depth, NearerTriangleWinsInEitherOrder) {
   for (const auto& [first_depth, second_depth, winner] :
        std::vector<std::tuple<double, double, uint32_t>>{{0.25, 0.75, 0}, {0.75, 0.25, 1}}) {
     const VisibilityBuffer buffer =
-        rasterise(two_overlapping_triangles(first_depth, second_depth), indices, size, size);
+        rasterise(two_overlapping_triangles(first_depth, second_depth), indices, depth_size, depth_size);
     const VisibleSample& overlap = buffer.at(4, 6);  // centre (4.5, 6.5) is inside both triangles
     ASSERT_TRUE(overlap.covered());
     EXPECT_EQ(overlap.triangle, winner);
@@ -34,14 +34,14 @@ TEST(Depth, NearerTriangleWinsInEitherOrder) {
 
 TEST(Depth, EqualDepthKeepsTheFirstTriangle) {
   const std::vector<uint32_t> indices{0, 1, 2, 3, 4, 5};
-  const VisibilityBuffer buffer = rasterise(two_overlapping_triangles(0.5, 0.5), indices, size, size);
+  const VisibilityBuffer buffer = rasterise(two_overlapping_triangles(0.5, 0.5), indices, depth_size, depth_size);
   EXPECT_EQ(buffer.at(4, 6).triangle, 0u);
 }
 
 TEST(Depth, DepthAtOrBeyondOneIsNotDrawn) {
   const std::vector<uint32_t> indices{0, 1, 2};
-  EXPECT_FALSE(rasterise(two_overlapping_triangles(1.0, 1.0), indices, size, size).at(4, 6).covered());
-  EXPECT_FALSE(rasterise(two_overlapping_triangles(1.5, 1.5), indices, size, size).at(4, 6).covered());
+  EXPECT_FALSE(rasterise(two_overlapping_triangles(1.0, 1.0), indices, depth_size, depth_size).at(4, 6).covered());
+  EXPECT_FALSE(rasterise(two_overlapping_triangles(1.5, 1.5), indices, depth_size, depth_size).at(4, 6).covered());
 }
 
 // Through render(): a lit quad in front of an unlit one (Lambert, light from +y).

@@ -232,7 +232,7 @@ Probe directional(const std::string& model, const Params& params, const glm::dve
   return probe;
 }
 
-const std::vector<std::string> directional_models{"lambert",  "phong",    "blinn_phong", "schlick",
+const std::vector<std::string> oracle_models{"lambert",  "phong",    "blinn_phong", "schlick",
                                                   "minnaert", "oren_nayar", "ward_iso",  "ward_aniso",
                                                   "cook_torrance"};
 const std::vector<std::string> point_models{"point_attenuated", "spot", "warn"};
@@ -325,7 +325,7 @@ TEST(Oracle, GrazingLightAndView) {
       other.z = std::abs(other.z) + 0.1;
       other = glm::normalize(other);
       const glm::dvec3 T = random_direction(random);
-      for (const std::string& model : directional_models) {
+      for (const std::string& model : oracle_models) {
         for (const bool light_grazes : {true, false}) {
           const glm::dvec3 L = light_grazes ? grazing : other, V = light_grazes ? other : grazing;
           judge(directional(model, with_defaults(model), L, V, z_axis, T,
@@ -350,7 +350,7 @@ TEST(Oracle, LightNearlyOppositeTheEye) {
     for (int rep = 0; rep < 4; ++rep) {
       const glm::dvec3 L = random_direction(random);
       const glm::dvec3 V = glm::normalize(-L + e * random_direction(random));
-      for (const std::string& model : directional_models)
+      for (const std::string& model : oracle_models)
         judge(directional(model, with_defaults(model), L, V, z_axis, x_axis, model + " opposite e=" + std::to_string(e)),
               report, random);
       // Symmetric about N: the sum lies along N exactly, H = N.

@@ -13,28 +13,28 @@ namespace {
 
 using namespace testing;
 
-const glm::dvec3 up{0, 1, 0};
-const glm::dvec3 diffuse{0.9, 0.7, 0.5};
+const glm::dvec3 y_up{0, 1, 0};
+const glm::dvec3 floor_diffuse{0.9, 0.7, 0.5};
 const glm::dvec3 light_color{1.0, 0.8, 2.0};
-const ObjectSpaceLighting scene_lights{up, {0, 50, 0}, {-100, 50, 0}};
+const ObjectSpaceLighting scene_lights{y_up, {0, 50, 0}, {-100, 50, 0}};
 
 // The floor point (x, 0, 0) with normal N, lit by the scene's lights.
-glm::dvec3 shade_floor(const Shader& shader, double x, const glm::dvec3& normal = up) {
+glm::dvec3 shade_floor(const Shader& shader, double x, const glm::dvec3& normal = y_up) {
   return shader.shade({{x, 0, 0}, normal, x_axis, {0, 0}}, scene_lights);
 }
 
 // ---- point_attenuated: D I sat(N·Lp) / (A d² + B d + C) ---------------------------------
 
-const Params point_params{{"diffuse", to_param(diffuse)}, {"light_color", to_param(light_color)}};
+const Params point_params{{"diffuse", to_param(floor_diffuse)}, {"light_color", to_param(light_color)}};
 
 TEST(PointAttenuated, InverseFalloffOfTheDefaults) {
   Shader shader("point_attenuated", point_params);  // attenuation (0, 0.04, 0)
   // Straight below at d = 50: 1 / (0.04 * 50) = 1/2.
-  expect_colour_near(shade_floor(shader, 0), 0.5 * diffuse * light_color);
+  expect_colour_near(shade_floor(shader, 0), 0.5 * floor_diffuse * light_color);
   // At (0, 25, 0) d = 25: the attenuation is exactly 1.
-  expect_colour_near(shader.shade({{0, 25, 0}, up, x_axis, {0, 0}}, scene_lights), diffuse * light_color);
+  expect_colour_near(shader.shade({{0, 25, 0}, y_up, x_axis, {0, 0}}, scene_lights), floor_diffuse * light_color);
   // (37.5, 0, 0): d = 62.5, N·Lp = 50/62.5 = 0.8, 0.8 / 2.5 = 0.32.
-  expect_colour_near(shade_floor(shader, 37.5), 0.32 * diffuse * light_color);
+  expect_colour_near(shade_floor(shader, 37.5), 0.32 * floor_diffuse * light_color);
 }
 
 TEST(PointAttenuated, QuadraticLinearAndConstantTerms) {
@@ -42,19 +42,19 @@ TEST(PointAttenuated, QuadraticLinearAndConstantTerms) {
   params["attenuation"] = {0.001, 0.01, 0.5};
   Shader shader("point_attenuated", params);
   // d = 50: 0.001 * 2500 + 0.01 * 50 + 0.5 = 3.5.
-  expect_colour_near(shade_floor(shader, 0), diffuse * light_color / 3.5);
+  expect_colour_near(shade_floor(shader, 0), floor_diffuse * light_color / 3.5);
 }
 
 TEST(PointAttenuated, UsesThePointLightNotTheDirectionalOne) {
   Shader shader("point_attenuated", point_params);
   ObjectSpaceLighting sideways = scene_lights;
   sideways.light_direction = x_axis;
-  expect_colour_near(shader.shade({{0, 0, 0}, up, x_axis, {0, 0}}, sideways), 0.5 * diffuse * light_color);
+  expect_colour_near(shader.shade({{0, 0, 0}, y_up, x_axis, {0, 0}}, sideways), 0.5 * floor_diffuse * light_color);
 }
 
 TEST(PointAttenuated, FacingAwayIsBlack) {
   Shader shader("point_attenuated", point_params);
-  expect_colour_near(shade_floor(shader, 0, -up), glm::dvec3(0.0));
+  expect_colour_near(shade_floor(shader, 0, -y_up), glm::dvec3(0.0));
   expect_colour_near(shade_floor(shader, 10, x_axis), glm::dvec3(0.0));  // Lp·x < 0
 }
 
@@ -69,7 +69,7 @@ TEST(PointAttenuated, AttenuationNeedsThreeValues) {
 // ---- spot: point_attenuated times s(cos(theta)), cos(theta) = Lp·L (E1) ------------------
 
 const double cos_umbra = 0.9659, cos_penumbra = 0.8660;
-const Params spot_params{{"diffuse", to_param(diffuse)}, {"light_color", to_param(light_color)}};
+const Params spot_params{{"diffuse", to_param(floor_diffuse)}, {"light_color", to_param(light_color)}};
 
 // The floor x at which the light sees the point at cos(theta) = c (it is 50 below).
 double floor_x_at(double cos_theta) { return 50 * std::tan(std::acos(cos_theta)); }
@@ -130,11 +130,11 @@ TEST(Spot, EqualConesAreAHardEdgeWithoutDividingByZero) {
 TEST(Spot, ThroughEvaluateTheAxisIsMinusTheNormal) {
   // Default axis -N: cos(theta) = N·L. L = N: on the axis, the point light at d = 50.
   const glm::dvec3 on_axis = eval("spot", spot_params, z_axis, z_axis);
-  expect_colour_near(on_axis, 0.5 * diffuse * light_color);
+  expect_colour_near(on_axis, 0.5 * floor_diffuse * light_color);
   // L at 20 degrees: cos 20 = 0.9397, in the penumbra.
   const double c20 = std::cos(glm::radians(20.0));
   const double s = (c20 - cos_penumbra) / (cos_umbra - cos_penumbra);
-  expect_colour_near(eval("spot", spot_params, direction(20), z_axis), s * c20 * 0.5 * diffuse * light_color);
+  expect_colour_near(eval("spot", spot_params, direction(20), z_axis), s * c20 * 0.5 * floor_diffuse * light_color);
   // L at 40 degrees: outside.
   expect_colour_near(eval("spot", spot_params, direction(40), z_axis), glm::dvec3(0.0));
   // An axis pointing from the light at the point: always in the umbra.
@@ -144,22 +144,22 @@ TEST(Spot, ThroughEvaluateTheAxisIsMinusTheNormal) {
 
 // ---- warn: D I / d² sat(Lp·L)^alpha sat(N·Lp) (E11) --------------------------------------
 
-const Params warn_params{{"diffuse", to_param(diffuse)}, {"light_color", {1000, 1000, 1000}}, {"warn_exponent", {10}}};
+const Params warn_params{{"diffuse", to_param(floor_diffuse)}, {"light_color", {1000, 1000, 1000}}, {"warn_exponent", {10}}};
 
 TEST(Warn, OnTheAxisIsInverseSquareTimesLambert) {
   Shader warn("warn", warn_params);
   // Straight below at d = 50: 1000 / 2500 = 0.4, both cosines 1.
-  expect_colour_near(shade_floor(warn, 0), 0.4 * diffuse);
+  expect_colour_near(shade_floor(warn, 0), 0.4 * floor_diffuse);
   // A normal tilted 60 degrees from +y, on the axis: only the Lambert factor changes.
   const glm::dvec3 normal(std::sin(glm::radians(60.0)), std::cos(glm::radians(60.0)), 0);
-  expect_colour_near(shade_floor(warn, 0, normal), 0.4 * 0.5 * diffuse);
+  expect_colour_near(shade_floor(warn, 0, normal), 0.4 * 0.5 * floor_diffuse);
 }
 
 TEST(Warn, OffTheAxisTheConeIsCosineToTheExponent) {
   Shader warn("warn", warn_params);
   // (20, 0, 0): d² = 2900, cos(theta) = 50 / sqrt(2900) = N·Lp.
   const double cos_theta = 50 / std::sqrt(2900.0);
-  expect_colour_near(shade_floor(warn, 20), 1000 / 2900.0 * std::pow(cos_theta, 11) * diffuse, 1e-14);
+  expect_colour_near(shade_floor(warn, 20), 1000 / 2900.0 * std::pow(cos_theta, 11) * floor_diffuse, 1e-14);
 }
 
 TEST(Warn, BehindTheLightAndFacingAwayAreZeroNotNaN) {
@@ -168,18 +168,18 @@ TEST(Warn, BehindTheLightAndFacingAwayAreZeroNotNaN) {
   Params fractional = warn_params;
   fractional["warn_exponent"] = {10.5};
   Shader warn("warn", fractional);
-  const glm::dvec3 above = warn.shade({{10, 60, 0}, -up, x_axis, {0, 0}}, scene_lights);
+  const glm::dvec3 above = warn.shade({{10, 60, 0}, -y_up, x_axis, {0, 0}}, scene_lights);
   expect_colour_near(above, glm::dvec3(0.0));
-  expect_colour_near(shade_floor(warn, 0, -up), glm::dvec3(0.0));
+  expect_colour_near(shade_floor(warn, 0, -y_up), glm::dvec3(0.0));
 }
 
 TEST(Warn, ThroughEvaluateTheConeFollowsTheAngleOfIncidence) {
   // Default axis -N: cos(theta) = N·L = N·Lp, so colour = I/d² cos^(alpha + 1).
-  expect_colour_near(eval("warn", warn_params, z_axis, direction(70)), 0.4 * diffuse);
+  expect_colour_near(eval("warn", warn_params, z_axis, direction(70)), 0.4 * floor_diffuse);
   const double c = std::cos(glm::radians(25.0));
-  expect_colour_near(eval("warn", warn_params, direction(25, 40), z_axis), 0.4 * std::pow(c, 11) * diffuse, 1e-14);
+  expect_colour_near(eval("warn", warn_params, direction(25, 40), z_axis), 0.4 * std::pow(c, 11) * floor_diffuse, 1e-14);
   // Distance: inverse square.
-  expect_colour_near(eval("warn", warn_params, z_axis, z_axis, z_axis, x_axis, 100), 0.1 * diffuse);
+  expect_colour_near(eval("warn", warn_params, z_axis, z_axis, z_axis, x_axis, 100), 0.1 * floor_diffuse);
 }
 
 }  // namespace

@@ -14,17 +14,15 @@
 namespace reference {
 namespace {
 
-Mesh sphere(int slices, int stacks) { return test::uv_sphere(slices, stacks); }
-
 Scene sphere_scene() {
   Scene scene;
-  scene.mesh = sphere(64, 32);  // 4096 triangles
+  scene.mesh = test::uv_sphere(64, 32);  // 4096 triangles
   scene.camera.eye = {0, 0, -5};
   scene.camera.target = {0, 0, 0};
   return scene;
 }
 
-const Params phong_params{{"diffuse", {0.6, 0.5, 0.4}}, {"specular", {1, 1, 1}}, {"power", {7}}};
+const Params render_phong{{"diffuse", {0.6, 0.5, 0.4}}, {"specular", {1, 1, 1}}, {"power", {7}}};
 
 TEST(Render, ErrorsComeBackAsText) {
   Scene scene = sphere_scene();
@@ -39,7 +37,7 @@ TEST(Render, ErrorsComeBackAsText) {
   scene.mesh.indices.push_back(static_cast<uint32_t>(scene.mesh.vertices.size()));
   scene.mesh.indices.push_back(0);
   scene.mesh.indices.push_back(1);
-  const auto out_of_range = render(scene, "phong", Mode::per_pixel, phong_params);
+  const auto out_of_range = render(scene, "phong", Mode::per_pixel, render_phong);
   ASSERT_FALSE(out_of_range);
   EXPECT_NE(out_of_range.error().find("out of range"), std::string::npos);
 }
@@ -49,7 +47,7 @@ TEST(Render, ErrorsComeBackAsText) {
 // have alpha 1 and coverage 1, the others are all zero.
 TEST(Render, ClosedMeshCoversItsSilhouetteWithoutHolesAndSetsAlphaAndCoverage) {
   const Scene scene = sphere_scene();
-  const auto image = render(scene, "phong", Mode::per_pixel, phong_params);
+  const auto image = render(scene, "phong", Mode::per_pixel, render_phong);
   ASSERT_TRUE(image) << image.error();
   ASSERT_EQ(image->rgba.size(), size_t{256} * 256 * 4);
   ASSERT_EQ(image->coverage.size(), size_t{256} * 256);

@@ -46,22 +46,22 @@ void expect_floor(const Scene& scene, const std::string& model, const Params& pa
   EXPECT_GT(covered, kSize * kSize / 4);
 }
 
-const glm::dvec3 diffuse{0.9, 0.7, 0.5};
-const Params lambert{{"diffuse", {0.9, 0.7, 0.5}}};
+const glm::dvec3 scene_diffuse{0.9, 0.7, 0.5};
+const Params scene_lambert{{"diffuse", {0.9, 0.7, 0.5}}};
 
 TEST(SceneLight, LambertUsesItsDirectionalLightByDefault) {
   // The light from +Y on a floor facing +Y: N.L = 1 everywhere.
-  expect_floor(floor_scene(), "lambert", lambert, [](const glm::dvec3&) { return diffuse; });
+  expect_floor(floor_scene(), "lambert", scene_lambert, [](const glm::dvec3&) { return scene_diffuse; });
   Scene directional = floor_scene();
   directional.light = SceneLight::directional;
-  expect_floor(directional, "lambert", lambert, [](const glm::dvec3&) { return diffuse; });
+  expect_floor(directional, "lambert", scene_lambert, [](const glm::dvec3&) { return scene_diffuse; });
 }
 
 TEST(SceneLight, PointMakesLambertFallOffAsTheCosineToTheLight) {
   Scene s = floor_scene();
   s.light = SceneLight::point;
   // L = normalize((0, 50, 0) - P) with P = (x, 0, z): N.L = 50 / |(0, 50, 0) - P|.
-  expect_floor(s, "lambert", lambert, [](const glm::dvec3& p) { return diffuse * (50.0 / glm::length(glm::dvec3(0, 50, 0) - p)); });
+  expect_floor(s, "lambert", scene_lambert, [](const glm::dvec3& p) { return scene_diffuse * (50.0 / glm::length(glm::dvec3(0, 50, 0) - p)); });
 }
 
 TEST(SceneLight, PointLightOnPhongMovesTheHighlight) {
@@ -83,7 +83,7 @@ TEST(SceneLight, APointLightInATranslatedObjectIsMovedIntoObjectSpace) {
   s.light = SceneLight::point;
   s.world = glm::dmat4(1.0);
   s.world[3] = glm::dvec4(0, -10, 0, 1);
-  auto image = render(s, "lambert", Mode::per_pixel, lambert);
+  auto image = render(s, "lambert", Mode::per_pixel, scene_lambert);
   ASSERT_TRUE(image) << image.error();
   const glm::dmat4 world_to_clip = projection_matrix(s.camera, 1.0) * view_matrix(s.camera);
   const int x = kSize / 2, y = kSize * 3 / 4;   // below the image centre: on the floor
@@ -97,7 +97,7 @@ TEST(SceneLight, AmbientIsAddedToEveryModelPerPixelAndPerVertex) {
   Scene s = floor_scene();
   s.ambient = {0.1, 0.2, 0.3};
   for (Mode mode : {Mode::per_pixel, Mode::per_vertex})
-    expect_floor(s, "lambert", lambert, [](const glm::dvec3&) { return diffuse + glm::dvec3(0.1, 0.2, 0.3); }, mode);
+    expect_floor(s, "lambert", scene_lambert, [](const glm::dvec3&) { return scene_diffuse + glm::dvec3(0.1, 0.2, 0.3); }, mode);
   // The ambient model's own colour and the scene's add up.
   expect_floor(s, "ambient", {{"ambient", {0.2, 0.3, 0.4}}},
                [](const glm::dvec3&) { return glm::dvec3(0.3, 0.5, 0.7); });
@@ -110,7 +110,7 @@ TEST(SceneLight, PointLightModelsKeepThePointLightAndRefuseTheDirectionalOne) {
   // point_attenuated's defaults (0, 0.04, 0): D sat(N.Lp) / (0.04 d).
   expect_floor(s, "point_attenuated", point, [](const glm::dvec3& p) {
     const double d = glm::length(glm::dvec3(0, 50, 0) - p);
-    return diffuse * (50.0 / d) / (0.04 * d);
+    return scene_diffuse * (50.0 / d) / (0.04 * d);
   });
   s.light = SceneLight::directional;
   for (const char* model : {"point_attenuated", "spot", "warn"}) {

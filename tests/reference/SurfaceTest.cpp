@@ -14,13 +14,11 @@
 namespace reference {
 namespace {
 
-Mesh sphere(int slices, int stacks) { return test::uv_sphere(slices, stacks); }
-
 // The sphere seen from the side, lit from the upper left so both the lit and the unlit
 // side are in view.
-Scene sphere_scene(int slices, int stacks) {
+Scene tessellated_sphere_scene(int slices, int stacks) {
   Scene scene;
-  scene.mesh = sphere(slices, stacks);
+  scene.mesh = test::uv_sphere(slices, stacks);
   scene.width = 96;
   scene.height = 96;
   scene.camera.eye = {0, 0, -5};
@@ -30,8 +28,8 @@ Scene sphere_scene(int slices, int stacks) {
   return scene;
 }
 
-const glm::dvec3 diffuse{0.9, 0.6, 0.3};
-const Params lambert{{"diffuse", {0.9, 0.6, 0.3}}};
+const glm::dvec3 surface_diffuse{0.9, 0.6, 0.3};
+const Params surface_lambert{{"diffuse", {0.9, 0.6, 0.3}}};
 const Params phong{{"diffuse", {0.9, 0.6, 0.3}}, {"specular", {1, 1, 1}}, {"power", {7}}};
 
 Framebuffer rendered(const Scene& scene, const std::string& model, const Params& params,
@@ -65,9 +63,9 @@ void expect_pixels(const Framebuffer& image, const SurfaceBuffer& surface, Expec
 double n_dot_l(const SurfaceSample& sample) { return glm::dot(glm::normalize(sample.normal), sample.to_light); }
 
 TEST(Surface, CoversExactlyThePixelsRenderShades) {
-  for (const Scene& scene : {sphere_scene(8, 6), sphere_scene(64, 32)}) {
+  for (const Scene& scene : {tessellated_sphere_scene(8, 6), tessellated_sphere_scene(64, 32)}) {
     const SurfaceBuffer surface = surface_of(scene);
-    const Framebuffer image = rendered(scene, "lambert", lambert);
+    const Framebuffer image = rendered(scene, "lambert", surface_lambert);
     EXPECT_EQ(surface.width, image.width);
     EXPECT_EQ(surface.height, image.height);
     EXPECT_EQ(surface.coverage, image.coverage);
@@ -75,7 +73,7 @@ TEST(Surface, CoversExactlyThePixelsRenderShades) {
 }
 
 TEST(Surface, ErrorsAreRendersErrors) {
-  Scene scene = sphere_scene(8, 6);
+  Scene scene = tessellated_sphere_scene(8, 6);
   scene.mesh.indices.push_back(0);
   const auto surface = render_surface(scene);
   ASSERT_FALSE(surface);
@@ -83,7 +81,7 @@ TEST(Surface, ErrorsAreRendersErrors) {
 }
 
 TEST(Surface, UnitVectorsAndNormalLengthBelowOneOnACoarseSphere) {
-  const SurfaceBuffer surface = surface_of(sphere_scene(8, 6));
+  const SurfaceBuffer surface = surface_of(tessellated_sphere_scene(8, 6));
   double shortest = 1;
   for (size_t pixel = 0; pixel < surface.samples.size(); ++pixel) {
     if (!surface.coverage[pixel]) continue;
@@ -99,15 +97,15 @@ TEST(Surface, UnitVectorsAndNormalLengthBelowOneOnACoarseSphere) {
 
 TEST(Surface, NDotLReproducesLambertPixelByPixel) {
   for (SceneLight light : {SceneLight::model_default, SceneLight::point}) {
-    Scene scene = sphere_scene(16, 12);
+    Scene scene = tessellated_sphere_scene(16, 12);
     scene.light = light;
-    expect_pixels(rendered(scene, "lambert", lambert), surface_of(scene),
-                  [](const SurfaceSample& s) { return diffuse * std::max(0.0, n_dot_l(s)); });
+    expect_pixels(rendered(scene, "lambert", surface_lambert), surface_of(scene),
+                  [](const SurfaceSample& s) { return surface_diffuse * std::max(0.0, n_dot_l(s)); });
   }
 }
 
 TEST(Perturbation, NoneIsRendersOwnImage) {
-  const Scene scene = sphere_scene(16, 12);
+  const Scene scene = tessellated_sphere_scene(16, 12);
   const auto plain = render(scene, "phong", Mode::per_pixel, phong);
   ASSERT_TRUE(plain);
   const Framebuffer unperturbed = rendered(scene, "phong", phong, Perturbation{});
@@ -117,40 +115,40 @@ TEST(Perturbation, NoneIsRendersOwnImage) {
 
 TEST(Perturbation, NegatedLightLightsTheOtherSide) {
   for (SceneLight light : {SceneLight::model_default, SceneLight::point}) {
-    Scene scene = sphere_scene(16, 12);
+    Scene scene = tessellated_sphere_scene(16, 12);
     scene.light = light;
-    expect_pixels(rendered(scene, "lambert", lambert, {.negate_light = true}), surface_of(scene),
-                  [](const SurfaceSample& s) { return diffuse * std::max(0.0, -n_dot_l(s)); });
+    expect_pixels(rendered(scene, "lambert", surface_lambert, {.negate_light = true}), surface_of(scene),
+                  [](const SurfaceSample& s) { return surface_diffuse * std::max(0.0, -n_dot_l(s)); });
   }
 }
 
 // point_attenuated: the light reflected through P keeps its distance, so only the cosine
 // changes sign: diffuse sat(-N·Lp) / (0.04 d).
 TEST(Perturbation, NegatedPointLightKeepsItsDistance) {
-  Scene scene = sphere_scene(16, 12);
+  Scene scene = tessellated_sphere_scene(16, 12);
   scene.light = SceneLight::point;  // the L render_surface reports for a point-light model
   const Params params{{"diffuse", {0.9, 0.6, 0.3}}, {"light_color", {1, 1, 1}}, {"attenuation", {0, 0.04, 0}}};
   expect_pixels(rendered(scene, "point_attenuated", params, {.negate_light = true}), surface_of(scene),
                 [&](const SurfaceSample& s) {
                   const double distance = glm::length(glm::dvec3(-3, 2, -2) - s.position);
-                  return diffuse * std::max(0.0, -n_dot_l(s)) / (0.04 * distance);
+                  return surface_diffuse * std::max(0.0, -n_dot_l(s)) / (0.04 * distance);
                 });
 }
 
 TEST(Perturbation, UnnormalisedNormalScalesLambertByTheNormalsLength) {
-  const Scene scene = sphere_scene(8, 6);
-  expect_pixels(rendered(scene, "lambert", lambert, {.unnormalised_normal = true}), surface_of(scene),
-                [](const SurfaceSample& s) { return diffuse * std::max(0.0, glm::dot(s.normal, s.to_light)); });
+  const Scene scene = tessellated_sphere_scene(8, 6);
+  expect_pixels(rendered(scene, "lambert", surface_lambert, {.unnormalised_normal = true}), surface_of(scene),
+                [](const SurfaceSample& s) { return surface_diffuse * std::max(0.0, glm::dot(s.normal, s.to_light)); });
   // And it does change the image (|n| < 1 inside the triangles), unlike per vertex.
-  EXPECT_NE(rendered(scene, "lambert", lambert, {.unnormalised_normal = true}).rgba,
-            rendered(scene, "lambert", lambert).rgba);
-  EXPECT_EQ(rendered(scene, "lambert", lambert, {.unnormalised_normal = true}, Mode::per_vertex).rgba,
-            rendered(scene, "lambert", lambert, {}, Mode::per_vertex).rgba);
+  EXPECT_NE(rendered(scene, "lambert", surface_lambert, {.unnormalised_normal = true}).rgba,
+            rendered(scene, "lambert", surface_lambert).rgba);
+  EXPECT_EQ(rendered(scene, "lambert", surface_lambert, {.unnormalised_normal = true}, Mode::per_vertex).rgba,
+            rendered(scene, "lambert", surface_lambert, {}, Mode::per_vertex).rgba);
 }
 
 TEST(Perturbation, NegatedEyeChangesPhongButNotLambert) {
-  const Scene scene = sphere_scene(16, 12);
-  EXPECT_EQ(rendered(scene, "lambert", lambert, {.negate_eye = true}).rgba, rendered(scene, "lambert", lambert).rgba);
+  const Scene scene = tessellated_sphere_scene(16, 12);
+  EXPECT_EQ(rendered(scene, "lambert", surface_lambert, {.negate_eye = true}).rgba, rendered(scene, "lambert", surface_lambert).rgba);
   const Framebuffer plain = rendered(scene, "phong", phong);
   const Framebuffer negated = rendered(scene, "phong", phong, {.negate_eye = true});
   EXPECT_NE(plain.rgba, negated.rgba);
@@ -159,14 +157,14 @@ TEST(Perturbation, NegatedEyeChangesPhongButNotLambert) {
   expect_pixels(negated, surface, [](const SurfaceSample& s) {
     const glm::dvec3 n = glm::normalize(s.normal);
     const glm::dvec3 r = glm::normalize(2.0 * n * glm::dot(n, s.to_light) - s.to_light);
-    return diffuse * std::max(0.0, n_dot_l(s)) + glm::dvec3(std::pow(std::max(0.0, glm::dot(r, -s.to_eye)), 7.0));
+    return surface_diffuse * std::max(0.0, n_dot_l(s)) + glm::dvec3(std::pow(std::max(0.0, glm::dot(r, -s.to_eye)), 7.0));
   }, 1e-9);
 }
 
 TEST(Perturbation, NegatedLightAlsoAppliesPerVertex) {
-  const Scene scene = sphere_scene(16, 12);
-  EXPECT_NE(rendered(scene, "lambert", lambert, {.negate_light = true}, Mode::per_vertex).rgba,
-            rendered(scene, "lambert", lambert, {}, Mode::per_vertex).rgba);
+  const Scene scene = tessellated_sphere_scene(16, 12);
+  EXPECT_NE(rendered(scene, "lambert", surface_lambert, {.negate_light = true}, Mode::per_vertex).rgba,
+            rendered(scene, "lambert", surface_lambert, {}, Mode::per_vertex).rgba);
 }
 
 }  // namespace

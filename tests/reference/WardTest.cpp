@@ -13,38 +13,38 @@ namespace {
 
 using namespace testing;
 
-const glm::dvec3 diffuse{0.1, 0.2, 0.3};
-const glm::dvec3 specular{0.5, 0.6, 0.7};
+const glm::dvec3 ward_diffuse{0.1, 0.2, 0.3};
+const glm::dvec3 ward_specular{0.5, 0.6, 0.7};
 const double cos30 = std::sqrt(3.0) / 2;
 
 // ---- ward_iso: (D + S exp(-tan²g/s²)/(4 pi s²)/sqrt((N·L)(N·V))) sat(N·L) ---------------
 
 const double sigma = 0.25;
-const Params ward_iso{{"diffuse", to_param(diffuse)}, {"specular", to_param(specular)}, {"roughness", {sigma}}};
+const Params ward_iso{{"diffuse", to_param(ward_diffuse)}, {"specular", to_param(ward_specular)}, {"roughness", {sigma}}};
 const double iso_peak = 1 / (4 * pi * sigma * sigma);  // 4 pi, not the isotropic shader's 2 pi (E2)
 
 TEST(WardIsotropic, EverythingAlongTheNormalIsDiffusePlusThePeak) {
-  expect_colour_near(eval("ward_iso", ward_iso, z_axis, z_axis), diffuse + iso_peak * specular);
+  expect_colour_near(eval("ward_iso", ward_iso, z_axis, z_axis), ward_diffuse + iso_peak * ward_specular);
   EXPECT_NEAR(iso_peak, 1.2732395447351628, 1e-15);  // 1 / (pi / 4)
 }
 
 TEST(WardIsotropic, MirrorDirectionHasHEqualToN) {
   // L, V at 60 degrees on opposite sides: tan(gamma) = 0, sqrt((N·L)(N·V)) = 1/2.
   expect_colour_near(eval("ward_iso", ward_iso, direction(60, 0), direction(60, 180)),
-                     0.5 * (diffuse + 2 * iso_peak * specular));
+                     0.5 * (ward_diffuse + 2 * iso_peak * ward_specular));
 }
 
 TEST(WardIsotropic, OffSpecularGaussianInTanGamma) {
   // L at 60 degrees, V = N: H at gamma = 30 degrees, tan² = 1/3; sqrt((N·L)(N·V)) = sqrt(1/2).
   const double lobe = std::exp(-(1.0 / 3) / (sigma * sigma)) * iso_peak / std::sqrt(0.5);
-  expect_colour_near(eval("ward_iso", ward_iso, direction(60), z_axis), 0.5 * (diffuse + lobe * specular));
+  expect_colour_near(eval("ward_iso", ward_iso, direction(60), z_axis), 0.5 * (ward_diffuse + lobe * ward_specular));
 }
 
 TEST(WardIsotropic, SpecularNeedsBothLightAndEyeAboveTheSurface) {
   // E4: the eye below the horizon leaves the diffuse term; no NaN from sqrt of a negative.
-  expect_colour_near(eval("ward_iso", ward_iso, direction(30), direction(100)), cos30 * diffuse);
+  expect_colour_near(eval("ward_iso", ward_iso, direction(30), direction(100)), cos30 * ward_diffuse);
   // Grazing eye (N·V = 0 exactly): the gate is strict, no division by zero.
-  expect_colour_near(eval("ward_iso", ward_iso, direction(30, 0), x_axis), cos30 * diffuse);
+  expect_colour_near(eval("ward_iso", ward_iso, direction(30, 0), x_axis), cos30 * ward_diffuse);
   expect_colour_near(eval("ward_iso", ward_iso, direction(100), direction(30)), glm::dvec3(0.0));
   expect_colour_near(eval("ward_iso", ward_iso, direction(100), direction(100)), glm::dvec3(0.0));
 }
@@ -59,7 +59,7 @@ TEST(WardIsotropic, RoughnessMustBePositive) {
 
 const glm::dvec2 sigma_xy{0.9, 0.1};
 const Params ward_aniso{
-    {"diffuse", to_param(diffuse)}, {"specular", to_param(specular)}, {"roughness_xy", {0.9, 0.1}}};
+    {"diffuse", to_param(ward_diffuse)}, {"specular", to_param(ward_specular)}, {"roughness_xy", {0.9, 0.1}}};
 const double aniso_peak = 1 / (4 * pi * sigma_xy.x * sigma_xy.y);
 
 // The lobe for H at angle gamma from N in the tangent direction that makes angle phi with
@@ -71,7 +71,7 @@ double aniso_lobe(double gamma_degrees, double phi_degrees) {
 }
 
 TEST(WardAnisotropic, EverythingAlongTheNormalIsDiffusePlusThePeak) {
-  expect_colour_near(eval("ward_aniso", ward_aniso, z_axis, z_axis), diffuse + aniso_peak * specular);
+  expect_colour_near(eval("ward_aniso", ward_aniso, z_axis, z_axis), ward_diffuse + aniso_peak * ward_specular);
 }
 
 TEST(WardAnisotropic, HighlightIsWideAlongTheTangentAndNarrowAcrossIt) {
@@ -79,11 +79,11 @@ TEST(WardAnisotropic, HighlightIsWideAlongTheTangentAndNarrowAcrossIt) {
   const double scale = aniso_peak / std::sqrt(0.5);
   const glm::dvec3 along = eval("ward_aniso", ward_aniso, direction(60, 0), z_axis);
   const glm::dvec3 across = eval("ward_aniso", ward_aniso, direction(60, 90), z_axis);
-  expect_colour_near(along, 0.5 * (diffuse + scale * aniso_lobe(30, 0) * specular));
-  expect_colour_near(across, 0.5 * (diffuse + scale * aniso_lobe(30, 90) * specular));
+  expect_colour_near(along, 0.5 * (ward_diffuse + scale * aniso_lobe(30, 0) * ward_specular));
+  expect_colour_near(across, 0.5 * (ward_diffuse + scale * aniso_lobe(30, 90) * ward_specular));
   expect_colour_near(eval("ward_aniso", ward_aniso, direction(60, 45), z_axis),
-                     0.5 * (diffuse + scale * aniso_lobe(30, 45) * specular));
-  EXPECT_GT(along.r - 0.5 * diffuse.r, 1000 * (across.r - 0.5 * diffuse.r));  // sigma_x = 9 sigma_y
+                     0.5 * (ward_diffuse + scale * aniso_lobe(30, 45) * ward_specular));
+  EXPECT_GT(along.r - 0.5 * ward_diffuse.r, 1000 * (across.r - 0.5 * ward_diffuse.r));  // sigma_x = 9 sigma_y
 }
 
 TEST(WardAnisotropic, FrameFollowsTheTangent) {
@@ -94,7 +94,7 @@ TEST(WardAnisotropic, FrameFollowsTheTangent) {
   // A tangent at 30 degrees azimuth: H at azimuth 75 makes 45 degrees with X.
   const double scale = aniso_peak / std::sqrt(0.5);
   expect_colour_near(eval("ward_aniso", ward_aniso, direction(60, 75), z_axis, z_axis, direction(90, 30)),
-                     0.5 * (diffuse + scale * aniso_lobe(30, 45) * specular));
+                     0.5 * (ward_diffuse + scale * aniso_lobe(30, 45) * ward_specular));
 }
 
 TEST(WardAnisotropic, TangentIsOrthogonalisedAndNormalised) {
@@ -109,15 +109,15 @@ TEST(WardAnisotropic, TangentIsOrthogonalisedAndNormalised) {
 }
 
 TEST(WardAnisotropic, SpecularNeedsBothLightAndEyeAboveTheSurface) {
-  expect_colour_near(eval("ward_aniso", ward_aniso, direction(30), direction(100)), cos30 * diffuse);
+  expect_colour_near(eval("ward_aniso", ward_aniso, direction(30), direction(100)), cos30 * ward_diffuse);
   expect_colour_near(eval("ward_aniso", ward_aniso, direction(100), direction(30)), glm::dvec3(0.0));
 }
 
 TEST(WardAnisotropic, TangentAlongTheNormalDropsTheSpecularTerm) {
   // X is undefined when T is parallel to N; docs/models.md is silent, the reference keeps
   // the diffuse term only (finite, where a GPU would give NaN).
-  expect_colour_near(eval("ward_aniso", ward_aniso, z_axis, z_axis, z_axis, z_axis), diffuse);
-  expect_colour_near(eval("ward_aniso", ward_aniso, z_axis, z_axis, z_axis, glm::dvec3(0.0)), diffuse);
+  expect_colour_near(eval("ward_aniso", ward_aniso, z_axis, z_axis, z_axis, z_axis), ward_diffuse);
+  expect_colour_near(eval("ward_aniso", ward_aniso, z_axis, z_axis, z_axis, glm::dvec3(0.0)), ward_diffuse);
 }
 
 TEST(WardAnisotropic, EqualRoughnessesMatchIsotropicWardOnlyAtThePeak) {
@@ -125,13 +125,13 @@ TEST(WardAnisotropic, EqualRoughnessesMatchIsotropicWardOnlyAtThePeak) {
   // -2 (1 - cos g) / s², the isotropic form's -tan²g / s². They agree at g = 0 and to
   // second order near it, not beyond: the book calls the forms "functionally equivalent".
   const Params round{
-      {"diffuse", to_param(diffuse)}, {"specular", to_param(specular)}, {"roughness_xy", {sigma, sigma}}};
+      {"diffuse", to_param(ward_diffuse)}, {"specular", to_param(ward_specular)}, {"roughness_xy", {sigma, sigma}}};
   expect_colour_near(eval("ward_aniso", round, direction(60, 0), direction(60, 180)),
                      eval("ward_iso", ward_iso, direction(60, 0), direction(60, 180)));
   // g = 30 degrees: exp(-2 (1 - cos30) / s²) against exp(-(1/3) / s²).
   const double scale = iso_peak / std::sqrt(0.5);
-  const double aniso = 0.5 * (diffuse.r + scale * std::exp(-2 * (1 - cos30) / (sigma * sigma)) * specular.r);
-  const double iso = 0.5 * (diffuse.r + scale * std::exp(-(1.0 / 3) / (sigma * sigma)) * specular.r);
+  const double aniso = 0.5 * (ward_diffuse.r + scale * std::exp(-2 * (1 - cos30) / (sigma * sigma)) * ward_specular.r);
+  const double iso = 0.5 * (ward_diffuse.r + scale * std::exp(-(1.0 / 3) / (sigma * sigma)) * ward_specular.r);
   EXPECT_NEAR(eval("ward_aniso", round, direction(60), z_axis).r, aniso, 1e-12);
   EXPECT_NEAR(eval("ward_iso", ward_iso, direction(60), z_axis).r, iso, 1e-12);
   EXPECT_GT(aniso / iso, 1.05);

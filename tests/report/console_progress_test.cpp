@@ -23,7 +23,7 @@ std::string progress(size_t total, bool terminal, bool quiet, size_t failing = 0
   return s;
 }
 
-size_t count(const std::string& text, const std::string& needle) {
+size_t occurrences(const std::string& text, const std::string& needle) {
   size_t n = 0;
   for (size_t at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) ++n;
   return n;
@@ -31,15 +31,15 @@ size_t count(const std::string& text, const std::string& needle) {
 
 TEST(ConsoleProgress, PlainLinesAtEveryTenth) {
   const std::string log = progress(1400, false, false, 3);
-  EXPECT_EQ(count(log, "\n"), 10u) << log;
+  EXPECT_EQ(occurrences(log, "\n"), 10u) << log;
   EXPECT_EQ(log.find('\r'), std::string::npos);
   EXPECT_TRUE(log.starts_with("progress: 140/1400 cells (10%), ")) << log;
   EXPECT_NE(log.find("progress: 1400/1400 cells (100%), "), std::string::npos) << log;
   EXPECT_NE(log.find("3 not passing\n"), std::string::npos) << log;
   // A small run does not print more lines than cells, nor a line per cell of a large one.
-  EXPECT_EQ(count(progress(3, false, false), "\n"), 3u);
-  EXPECT_EQ(count(progress(7, false, false), "\n"), 7u);
-  EXPECT_EQ(count(progress(23, false, false), "\n"), 10u);
+  EXPECT_EQ(occurrences(progress(3, false, false), "\n"), 3u);
+  EXPECT_EQ(occurrences(progress(7, false, false), "\n"), 7u);
+  EXPECT_EQ(occurrences(progress(23, false, false), "\n"), 10u);
   EXPECT_EQ(progress(1400, false, true), "") << "--quiet off a terminal";
 }
 
@@ -51,7 +51,7 @@ TEST(ConsoleProgress, OneRefreshedLineOnATerminal) {
   EXPECT_NE(tty.find("ETA"), std::string::npos);
   EXPECT_NE(tty.find("1 not passing"), std::string::npos);
   EXPECT_TRUE(tty.ends_with("\r\x1b[K")) << "and erased at the end";
-  EXPECT_LT(count(tty, "\r["), 50u) << "redraws are throttled";
+  EXPECT_LT(occurrences(tty, "\r["), 50u) << "redraws are throttled";
 }
 
 }  // namespace

@@ -12,7 +12,7 @@
 namespace shaderbed {
 namespace {
 
-std::string printed(const RunReport& report, const ConsoleOptions& options) {
+std::string console_printed(const RunReport& report, const ConsoleOptions& options) {
   std::FILE* out = std::tmpfile();
   print_console_report(report, out, options);
   std::string s(size_t(std::ftell(out)), '\0');
@@ -44,7 +44,7 @@ const char* const kMatrix =
 const char* const kTotals = "FAIL: 7 cells: 4 passed, 1 failed, 1 known, 1 errors in 2.5 s";
 
 TEST(ConsoleReport, DefaultIsTheMatrixNotPerCellRows) {
-  const std::string out = printed(test::matrix_report(), {});
+  const std::string out = console_printed(test::matrix_report(), {});
   // One line per case/variant (the case named on its first), a column per language x
   // backend/path that ran, the row's worst error; then the legend.
   EXPECT_EQ(out.find(kMatrix), 0u) << out;
@@ -70,7 +70,7 @@ TEST(ConsoleReport, DefaultIsTheMatrixNotPerCellRows) {
 
 TEST(ConsoleReport, TableHasARowPerCell) {
   const RunReport report = test::matrix_report();
-  const std::string out = printed(report, {.view = ConsoleView::table});
+  const std::string out = console_printed(report, {.view = ConsoleView::table});
   EXPECT_TRUE(out.starts_with("case     variant  lang  backend  path   shape   max err   min pass  rmse      verdict\n"))
       << out;
   EXPECT_EQ(out.find("max err\nphong"), std::string::npos) << "no matrix\n" << out;
@@ -81,13 +81,13 @@ TEST(ConsoleReport, TableHasARowPerCell) {
   EXPECT_NE(out.find("\nfailures:\n"), std::string::npos);
   EXPECT_TRUE(out.ends_with(std::string("\n\n") + kTotals + "\n")) << out;
   // --timing shows the table, with its timing columns, even without --table.
-  const std::string timed = printed(report, {.timing = true});
+  const std::string timed = console_printed(report, {.timing = true});
   EXPECT_NE(timed.find("draw ms (wall, median [CI])"), std::string::npos) << timed;
   EXPECT_TRUE(timed.starts_with("case ")) << timed;
 }
 
 TEST(ConsoleReport, QuietIsTheProblemsAndTheTotals) {
-  const std::string out = printed(test::matrix_report(), {.view = ConsoleView::quiet});
+  const std::string out = console_printed(test::matrix_report(), {.view = ConsoleView::quiet});
   EXPECT_TRUE(out.starts_with("failures:\n  phong pixel glsl vulkan/spirv cube")) << out;
   EXPECT_EQ(out.find("worst"), std::string::npos) << "no matrix\n" << out;
   EXPECT_EQ(out.find("min pass"), std::string::npos) << "no table\n" << out;
@@ -97,7 +97,7 @@ TEST(ConsoleReport, QuietIsTheProblemsAndTheTotals) {
 
   RunReport passing = test::matrix_report();
   passing.results = {passing.results[0], passing.results[2]};
-  EXPECT_EQ(printed(passing, {.view = ConsoleView::quiet}), "2 cells: 2 passed, 0 failed, 0 known, 0 errors in 2.5 s\n")
+  EXPECT_EQ(console_printed(passing, {.view = ConsoleView::quiet}), "2 cells: 2 passed, 0 failed, 0 known, 0 errors in 2.5 s\n")
       << "nothing to say but the totals";
 }
 

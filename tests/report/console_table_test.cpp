@@ -9,7 +9,7 @@
 namespace shaderbed {
 namespace {
 
-std::string printed(const RunReport& report, const TableOptions& options) {
+std::string table_printed(const RunReport& report, const TableOptions& options) {
   char* text = nullptr;
   size_t size = 0;
   std::FILE* out = open_memstream(&text, &size);
@@ -38,9 +38,9 @@ RunReport timed_report() {
 }
 
 TEST(ConsoleTable, TimingColumnsOnlyWhenAsked) {
-  const std::string plain = printed(timed_report(), {});
+  const std::string plain = table_printed(timed_report(), {});
   EXPECT_EQ(plain.find("draw ms"), std::string::npos);
-  const std::string timed = printed(timed_report(), {.timing = true});
+  const std::string timed = table_printed(timed_report(), {.timing = true});
   EXPECT_NE(timed.find("draw ms (wall, median [CI])"), std::string::npos) << timed;
   EXPECT_NE(timed.find("0.875 [0.812, 1.062]"), std::string::npos) << timed;   // wall
   EXPECT_NE(timed.find("0.750 [0.625, 2.500]"), std::string::npos) << timed;   // driver clock

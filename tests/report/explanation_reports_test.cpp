@@ -42,7 +42,7 @@ RunReport explained_failure() {
   return report;
 }
 
-std::string printed(const RunReport& report) {
+std::string explained(const RunReport& report) {
   std::FILE* out = std::tmpfile();
   print_console_report(report, out, {});
   std::string s(size_t(std::ftell(out)), '\0');
@@ -53,7 +53,7 @@ std::string printed(const RunReport& report) {
 }
 
 TEST(ExplanationReports, ConsoleNamesTheFittingConventionAndTheOriginal) {
-  const std::string text = printed(explained_failure());
+  const std::string text = explained(explained_failure());
   EXPECT_NE(text.find("      explained: matches the reference × 1/π (1/π normalisation in the render only) to 7.2e-8"),
             std::string::npos) << text;
   EXPECT_NE(text.find("      judged against: the original, hlsl vulkan/spirv (variant original)"), std::string::npos) << text;
@@ -62,7 +62,7 @@ TEST(ExplanationReports, ConsoleNamesTheFittingConventionAndTheOriginal) {
 TEST(ExplanationReports, ConsoleShowsTheClosestWhenNoneFits) {
   RunReport report = explained_failure();
   report.results[0].explanations.pop_back();
-  const std::string text = printed(report);
+  const std::string text = explained(report);
   EXPECT_NE(text.find("no convention explains it; closest: encoded with gamma 2.2 fits only to 0.28 (incomplete)"),
             std::string::npos) << text;
 }

@@ -17,11 +17,9 @@
 #include "ShellCommand.h"
 namespace {
 
-namespace fs = std::filesystem;
+using shaderbed::test::shaderbed_cli;
 
-std::pair<int, std::string> shaderbed_cli(const std::string& args) {
-  return shaderbed::test::run_shell(std::string(SHADERBED_BINARY) + " " + args);
-}
+namespace fs = std::filesystem;
 
 TEST(Conventions, VersionNamesShaderbedAndTheToolchain) {
   const auto [status, out] = shaderbed_cli("--version");

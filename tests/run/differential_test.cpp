@@ -9,31 +9,20 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "FileContents.h"
 #include "ShellCommand.h"
 #include "TempDir.h"
 
 namespace {
 
+using shaderbed::test::read_json;
+using shaderbed::test::read_text;
+using shaderbed::test::shaderbed_cli;
+
 namespace fs = std::filesystem;
 using nlohmann::json;
 
 const fs::path kCorpus = fs::path(SHADERBED_SOURCE_DIR) / "tests" / "differential";
-
-std::pair<int, std::string> shaderbed_cli(const std::string& args) {
-  return shaderbed::test::run_shell(std::string(SHADERBED_BINARY) + " " + args);
-}
-
-json read_json(const std::string& path) {
-  std::ifstream in(path);
-  return json::parse(in);
-}
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 void replace_once(const fs::path& file, const std::string& from, const std::string& to) {
   std::string text = read_text(file);

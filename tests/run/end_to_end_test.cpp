@@ -13,20 +13,19 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "SourceTree.h"
 #include "ShellCommand.h"
 #include "run/Runner.h"
 
 namespace shaderbed {
 namespace {
 
+using shaderbed::test::shaderbed_cli;
+
 namespace fs = std::filesystem;
-const fs::path kSource = SHADERBED_SOURCE_DIR;
+using shaderbed::test::kSource;
 
 // Runs the CLI; returns the exit status and stdout+stderr.
-std::pair<int, std::string> shaderbed_cli(const std::string& args) {
-  return test::run_shell(std::string(SHADERBED_BINARY) + " " + args);
-}
-
 TEST(EndToEnd, DefaultSuitePassesOnEveryBackendAndGlPath) {
   auto report = run_suite(RunOptions{});
   ASSERT_TRUE(report) << report.error().to_string();

@@ -11,30 +11,23 @@
 
 #include <gtest/gtest.h>
 
+#include "FileContents.h"
 #include "ShellCommand.h"
 #include "TempDir.h"
 
 namespace {
 
+using shaderbed::test::read_text;
+using shaderbed::test::shaderbed_cli;
+
 namespace fs = std::filesystem;
 using shaderbed::test::TempDir;
-
-std::pair<int, std::string> shaderbed_cli(const std::string& args) {
-  return shaderbed::test::run_shell(std::string(SHADERBED_BINARY) + " " + args);
-}
 
 // Copies tests/realworld/<name> into the folder, keeping its relative path.
 void copy_realworld(const TempDir& dir, const std::string& name) {
   const fs::path to = dir.path() / name;
   fs::create_directories(to.parent_path());
   fs::copy_file(fs::path(SHADERBED_SOURCE_DIR) / "tests/realworld" / name, to, fs::copy_options::overwrite_existing);
-}
-
-std::string read(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 // The case has a line that is exactly `code`, up to its trailing comment.
@@ -52,7 +45,7 @@ std::string init_and_run(const TempDir& dir, const std::string& shaders, const s
   EXPECT_EQ(status, 0) << out;
   EXPECT_NE(out.find("wrote "), std::string::npos) << out;
   EXPECT_NE(out.find(" 0 failed, 0 known, 0 errors"), std::string::npos) << "every cell ran and passed:\n" << out;
-  const std::string text = read(dir / case_name);
+  const std::string text = read_text(dir / case_name);
   EXPECT_TRUE(has_binding(text, "# Case written by `shaderbed init` from")) << text;
   EXPECT_EQ(text.find("TODO"), std::string::npos) << text;
   return text;
@@ -178,7 +171,7 @@ TEST(InitCli, UnguessableUniformIsATodoAndTheRunSaysItIsUnbound) {
                           "void main() { fragColor = vec4(vec3(u_roughness), 1.0); }\n");
   const auto [status, out] = shaderbed_cli("init " + dir / "rough.vert" + " " + dir / "rough.frag" + " --size 32");
   EXPECT_EQ(status, 1) << out;
-  const std::string c = read(dir / "rough.toml");
+  const std::string c = read_text(dir / "rough.toml");
   EXPECT_TRUE(has_binding(c, "# u_roughness = 0.0")) << c;
   EXPECT_NE(c.find("TODO: bind 'u_roughness' (float): a case parameter, a scene quantity or a literal"), std::string::npos) << c;
   EXPECT_TRUE(has_binding(c, R"(u_mvp = "transform")"));
@@ -195,17 +188,17 @@ TEST(InitCli, NeverOverwritesWithoutForce) {
   const std::string case_path = dir / "mine.toml";
   auto [first, out1] = shaderbed_cli("init " + shader + " --out " + case_path + " --no-run");
   ASSERT_EQ(first, 0) << out1;
-  const std::string edited = read(case_path) + "# my own edit\n";
+  const std::string edited = read_text(case_path) + "# my own edit\n";
   dir.write("mine.toml", edited);
   auto [again, out2] = shaderbed_cli("init " + shader + " --out " + case_path + " --no-run");
   EXPECT_EQ(again, 2) << out2;
   EXPECT_NE(out2.find("--force"), std::string::npos) << out2;
-  EXPECT_EQ(read(case_path), edited) << "the file is unchanged";
+  EXPECT_EQ(read_text(case_path), edited) << "the file is unchanged";
   auto [forced, out3] = shaderbed_cli("init " + shader + " --out " + case_path + " --no-run --force");
   EXPECT_EQ(forced, 0) << out3;
-  EXPECT_EQ(read(case_path).find("# my own edit"), std::string::npos) << "--force rewrites it";
+  EXPECT_EQ(read_text(case_path).find("# my own edit"), std::string::npos) << "--force rewrites it";
   // The case resolves its shader from its own folder.
-  EXPECT_TRUE(has_binding(read(case_path), R"(hlsl = { vertex = "hlsl/lambert_two_entries.hlsl", fragment = "hlsl/lambert_two_entries.hlsl", vertex_entry = "LightVertexShader", fragment_entry = "LightPixelShader" })"));
+  EXPECT_TRUE(has_binding(read_text(case_path), R"(hlsl = { vertex = "hlsl/lambert_two_entries.hlsl", fragment = "hlsl/lambert_two_entries.hlsl", vertex_entry = "LightVertexShader", fragment_entry = "LightPixelShader" })"));
 }
 
 TEST(InitCli, BadInputIsOneLineAndExitTwo) {

@@ -10,22 +10,17 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "FileContents.h"
 #include "ShellCommand.h"
 #include "TempDir.h"
 
 namespace {
 
+using shaderbed::test::read_json;
+using shaderbed::test::shaderbed_cli;
+
 namespace fs = std::filesystem;
 using nlohmann::json;
-
-std::pair<int, std::string> shaderbed_cli(const std::string& args) {
-  return shaderbed::test::run_shell(std::string(SHADERBED_BINARY) + " " + args);
-}
-
-json read_json(const std::string& path) {
-  std::ifstream in(path);
-  return json::parse(in);
-}
 
 // A Lambert original in HLSL and one more variant, `port`, in `language` with the given
 // vertex and fragment text; its bindings name what the good shaders declare.
@@ -184,10 +179,13 @@ TEST(Isolation, AnInterruptedRunWritesWhatItHasMarkedIncomplete) {
   const std::string the_case = write_case(dir, "glsl", kGlslVertex, kSlowFragment,
                                           "Transform = \"transform\"\nn = 1000000000\n");
   const std::string results = dir / "r.json";
-  // The run reaches the endless draw within a second or two; SIGINT at 4 s ends it.
+  // SIGINT once the first progress line says cells have finished (the original's: the
+  // port's draw never ends), however slow the machine (a sanitizer build, a busy CI).
+  const std::string progress = dir / "progress.txt";
   const auto [status, out] = shaderbed::test::run_shell(
-      "( " + std::string(SHADERBED_BINARY) + " run --case " + the_case + " --size 128 --repeat 0 -q -j2 --draw-timeout 600 --json " +
-      results + " & pid=$!; sleep 4; kill -INT $pid; wait $pid; echo \"exit status $?\" )");
+      "( " + std::string(SHADERBED_BINARY) + " run --case " + the_case + " --size 128 --repeat 0 -j2 --draw-timeout 600 --json " +
+      results + " > " + progress + " 2>&1 & pid=$!; for i in $(seq 1200); do grep -q '^progress: ' " + progress +
+      " && break; sleep 0.1; done; kill -INT $pid; wait $pid; echo \"exit status $?\"; cat " + progress + " )");
   EXPECT_NE(out.find("exit status 130"), std::string::npos) << out;
   EXPECT_NE(out.find("INCOMPLETE: interrupted by SIGINT after"), std::string::npos) << out;
   const json j = read_json(results);

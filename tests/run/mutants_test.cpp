@@ -23,6 +23,7 @@
 #include <gtest/gtest.h>
 #include <toml++/toml.h>
 
+#include "SourceTree.h"
 #include "run/Runner.h"
 #include "scene/CaseFile.h"
 #include "scene/Primitives.h"
@@ -31,7 +32,7 @@ namespace shaderbed {
 namespace {
 
 namespace fs = std::filesystem;
-const fs::path kSource = SHADERBED_SOURCE_DIR;
+using shaderbed::test::kSource;
 const fs::path kMutants = kSource / "tests" / "mutants";
 const fs::path kMutantCases = kMutants / "cases";
 const fs::path kManifest = kMutants / "expectations.toml";

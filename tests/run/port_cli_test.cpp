@@ -9,10 +9,13 @@
 
 #include <gtest/gtest.h>
 
+#include "FileContents.h"
 #include "ShellCommand.h"
 #include "TempDir.h"
 
 namespace {
+
+using shaderbed::test::read_text;
 
 namespace fs = std::filesystem;
 using shaderbed::test::TempDir;
@@ -21,13 +24,6 @@ const fs::path kRoot = SHADERBED_SOURCE_DIR;
 
 std::pair<int, std::string> port(const std::string& args) {
   return shaderbed::test::run_shell(std::string(SHADERBED_BINARY) + " port " + args + " --size 48 --shape sphere -q");
-}
-
-std::string read(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 bool every_cell_passed(const std::string& out) {
@@ -45,13 +41,13 @@ TEST(PortCli, LibraryHlslCaseToGlsl450AndGlsl330RendersAsTheOriginal) {
     EXPECT_NE(out.find("SPIRV-Cross changed or could not keep"), std::string::npos) << out;
     EXPECT_NE(out.find("'InVertex.Position' -> 'Position'"), std::string::npos) << out;
     ASSERT_TRUE(fs::exists(out_dir / "phong.port.toml")) << out;
-    const std::string ported_case = read(out_dir / "phong.port.toml");
+    const std::string ported_case = read_text(out_dir / "phong.port.toml");
     EXPECT_NE(ported_case.find("reference = { backend = \"vulkan\", language = \"hlsl\", path = \"spirv\" }"),
               std::string::npos) << ported_case;
     EXPECT_NE(ported_case.find("[bindings.glsl]"), std::string::npos) << ported_case;
     EXPECT_NE(ported_case.find("[attributes.glsl]\nPosition = \"position\""), std::string::npos) << ported_case;
     EXPECT_EQ(ported_case.find("[tolerance]"), std::string::npos) << ported_case;
-    const std::string vert = read(out_dir / "setup_vs.port.vert");
+    const std::string vert = read_text(out_dir / "setup_vs.port.vert");
     EXPECT_NE(vert.find(std::string("#version ") + (std::string(target) == "glsl" ? "450" : "330")), std::string::npos) << vert;
     EXPECT_NE(vert.find("Transform"), std::string::npos) << vert;
   }
@@ -63,7 +59,7 @@ TEST(PortCli, LibraryGlslCaseToHlslRendersAsTheOriginal) {
                                   (tmp / "hlsl"));
   ASSERT_EQ(status, 0) << out;
   EXPECT_TRUE(every_cell_passed(out)) << out;
-  const std::string ported_case = read(tmp.path() / "hlsl/phong.port.toml");
+  const std::string ported_case = read_text(tmp.path() / "hlsl/phong.port.toml");
   // GLSL's M * v reads the same bytes as an HLSL matrix of the other register convention.
   EXPECT_NE(ported_case.find("modelViewProjection = { value = \"transform\", layout = \"row_vector\" }"),
             std::string::npos) << ported_case;
@@ -78,7 +74,7 @@ TEST(PortCli, RealWorldGlsl330ToHlslAndSm5TexturedToGlslRenderAsTheOriginals) {
     ASSERT_EQ(status, 0) << out;
     EXPECT_TRUE(every_cell_passed(out)) << out;
     EXPECT_NE(out.find("gets semantic POSITION"), std::string::npos) << out;
-    const std::string vs = read(tmp.path() / "glsl330/blinn_phong.port.vs.hlsl");
+    const std::string vs = read_text(tmp.path() / "glsl330/blinn_phong.port.vs.hlsl");
     EXPECT_NE(vs.find("aPos : POSITION"), std::string::npos) << vs;
     EXPECT_NE(vs.find("model"), std::string::npos) << vs;
   }
@@ -88,7 +84,7 @@ TEST(PortCli, RealWorldGlsl330ToHlslAndSm5TexturedToGlslRenderAsTheOriginals) {
     ASSERT_EQ(status, 0) << out;
     EXPECT_TRUE(every_cell_passed(out)) << out;
     EXPECT_NE(out.find("-> sampler2D 'shaderTexture'"), std::string::npos) << out;
-    const std::string ported_case = read(tmp.path() / "hlsl5/hlsl5_textured_diffuse.port.toml");
+    const std::string ported_case = read_text(tmp.path() / "hlsl5/hlsl5_textured_diffuse.port.toml");
     EXPECT_NE(ported_case.find("[textures.glsl]"), std::string::npos) << ported_case;
     EXPECT_NE(ported_case.find("filter = \"linear\""), std::string::npos) << ported_case;
   }
@@ -107,7 +103,7 @@ TEST(PortCli, PortGoesNextToTheCaseAndIsNotOverwrittenWithoutForce) {
     const fs::path dir = tmp.path() / "cases/blinn.port.glsl-gl";
     ASSERT_TRUE(fs::exists(dir / "blinn.port.toml")) << out;
     EXPECT_TRUE(fs::exists(dir / "blinn_phong.port.vert"));
-    const std::string ported_case = read(dir / "blinn.port.toml");
+    const std::string ported_case = read_text(dir / "blinn.port.toml");
     EXPECT_NE(ported_case.find("[variants.pixel_port]"), std::string::npos) << ported_case;
     EXPECT_NE(ported_case.find("variant = \"pixel\""), std::string::npos) << ported_case;
     EXPECT_NE(ported_case.find("vertex = \"../../glsl330/blinn_phong.vert\""), std::string::npos) << ported_case;

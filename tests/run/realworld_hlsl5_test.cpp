@@ -24,12 +24,12 @@ namespace {
 namespace fs = std::filesystem;
 using test::kRealWorld;
 
-RunOptions quick(const std::string& cases_dir, const std::string& case_name) {
+RunOptions quick_32(const std::string& cases_dir, const std::string& case_name) {
   return test::quick_run(cases_dir, case_name, 32);
 }
 
 TEST(RealWorldHlsl5, TutorialShaderPassesOnEveryHlslPath) {
-  auto report = run_suite(quick((kRealWorld / "cases").string(), "hlsl5_textured_diffuse"));
+  auto report = run_suite(quick_32((kRealWorld / "cases").string(), "hlsl5_textured_diffuse"));
   ASSERT_TRUE(report) << report.error().to_string();
   std::set<std::string> paths;
   for (const CellResult& r : report->results) {
@@ -51,7 +51,7 @@ TEST(RealWorldHlsl5, TutorialShaderPassesOnEveryHlslPath) {
 }
 
 TEST(RealWorldHlsl5, SwizzledTexelBugFailsOnEveryPath) {
-  auto report = run_suite(quick((kRealWorld / "cases").string(), "hlsl5_textured_diffuse_bug"));
+  auto report = run_suite(quick_32((kRealWorld / "cases").string(), "hlsl5_textured_diffuse_bug"));
   ASSERT_TRUE(report) << report.error().to_string();
   ASSERT_EQ(report->results.size(), 6u);
   for (const CellResult& r : report->results) {
@@ -86,7 +86,7 @@ class CaseTree {
   // The one Vulkan cell's error (the texture errors are the same on every path).
   std::string first_error(const std::string& textures) const {
     write_case(textures);
-    RunOptions o = quick(cases(), "t");
+    RunOptions o = quick_32(cases(), "t");
     o.backends = {"vulkan"};
     o.shapes = {"sphere"};
     auto report = run_suite(o);
@@ -175,7 +175,7 @@ TEST(RealWorldHlsl5, SamplerStateSettingsReachEveryPath) {
   ASSERT_TRUE(write_image_file(tree.dir() / "hlsl5/two.png", 8, 8, 3, PixelType::uint8, texels.data()));
   const auto render = [&](const std::string& textures) {
     tree.write_case(textures);
-    RunOptions o = quick(tree.cases(), "t");
+    RunOptions o = quick_32(tree.cases(), "t");
     o.shapes = {"sphere"};
     return run_suite(o);
   };

@@ -14,14 +14,12 @@
 
 namespace {
 
+using shaderbed::test::shaderbed_cli;
+
 using shaderbed::test::TempDir;
 using nlohmann::json;
 
 // stdout and stderr together, as a user sees them.
-std::pair<int, std::string> shaderbed_cli(const std::string& args) {
-  return shaderbed::test::run_shell(std::string(SHADERBED_BINARY) + " " + args);
-}
-
 // stdout alone, parsed as JSON (progress, if any, goes to stderr).
 json shaderbed_json(const std::string& args) {
   const auto [status, out] = shaderbed::test::run_shell("(" + std::string(SHADERBED_BINARY) + " " + args + " 2>/dev/null)");

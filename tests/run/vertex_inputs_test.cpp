@@ -72,7 +72,7 @@ TEST(VertexInputs, AMapToAWordThatIsNoStreamSaysSo) {
   EXPECT_NE(streams.error().message.find("mapped to 'place'"), std::string::npos) << streams.error().message;
 }
 
-RunOptions small_run(const std::string& cases_dir) {
+RunOptions small_vertex_run(const std::string& cases_dir) {
   RunOptions o;
   o.cases_dir = cases_dir;
   o.cases = {"glsl_lambert_packed_normal"};
@@ -83,7 +83,7 @@ RunOptions small_run(const std::string& cases_dir) {
 }
 
 TEST(VertexInputs, NormalsReadFromTheVertexColourPassOnEveryPath) {
-  auto report = run_suite(small_run((kRealWorld / "cases").string()));
+  auto report = run_suite(small_vertex_run((kRealWorld / "cases").string()));
   ASSERT_TRUE(report) << report.error().to_string();
   std::set<std::string> paths;
   for (const CellResult& r : report->results) {
@@ -103,7 +103,7 @@ TEST(VertexInputs, WithoutTheMapTheUnmatchedInputIsNamedOnEveryPath) {
   text.erase(text.find(map), map.size());
   for (const char* folder : {"glsl", "hlsl"}) fs::create_directory_symlink(kRealWorld / folder, dir.path() / folder);
   dir.write("cases/glsl_lambert_packed_normal.toml", text);
-  RunOptions o = small_run((dir.path() / "cases").string());
+  RunOptions o = small_vertex_run((dir.path() / "cases").string());
   o.languages = {"glsl"};
   auto report = run_suite(o);
   ASSERT_TRUE(report) << report.error().to_string();

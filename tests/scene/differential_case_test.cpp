@@ -10,14 +10,14 @@
 namespace shaderbed {
 namespace {
 
-const std::string kGood = R"(reference = { language = "hlsl", backend = "vulkan" }
+const std::string kGoodDifferential = R"(reference = { language = "hlsl", backend = "vulkan" }
 [variants.pixel]
 hlsl = { vertex = "a.hlsl", fragment = "a.hlsl" }
 glsl = { vertex = "a.vert", fragment = "a.frag" }
 )";
 
-Result<Case> load_edited(const std::string& from, const std::string& to) {
-  std::string text = kGood;
+Result<Case> load_differential(const std::string& from, const std::string& to) {
+  std::string text = kGoodDifferential;
   EXPECT_NE(text.find(from), std::string::npos) << from;
   text.replace(text.find(from), from.size(), to);
   test::TempDir dir("differential_case");
@@ -27,7 +27,7 @@ Result<Case> load_edited(const std::string& from, const std::string& to) {
 std::string message(const Result<Case>& c) { return c ? std::string("(loaded)") : c.error().to_string(); }
 
 TEST(DifferentialCase, LoadsWithTheDocumentedDefaults) {
-  auto c = load_edited("a.hlsl", "a.hlsl");
+  auto c = load_differential("a.hlsl", "a.hlsl");
   ASSERT_TRUE(c) << message(c);
   EXPECT_TRUE(c->differential());
   ASSERT_TRUE(c->reference_render);
@@ -40,13 +40,13 @@ TEST(DifferentialCase, LoadsWithTheDocumentedDefaults) {
 }
 
 TEST(DifferentialCase, GlslOnGlDefaultsToTheNativePath) {
-  auto c = load_edited("language = \"hlsl\", backend = \"vulkan\"", "language = \"glsl\", backend = \"gl\"");
+  auto c = load_differential("language = \"hlsl\", backend = \"vulkan\"", "language = \"glsl\", backend = \"gl\"");
   ASSERT_TRUE(c) << message(c);
   EXPECT_EQ(c->reference_render->path, "glsl");
 }
 
 TEST(DifferentialCase, ACaseMayStateItsOwnToleranceWithAReason) {
-  auto c = load_edited("glsl = { vertex = \"a.vert\", fragment = \"a.frag\" }\n",
+  auto c = load_differential("glsl = { vertex = \"a.vert\", fragment = \"a.frag\" }\n",
                        "glsl = { vertex = \"a.vert\", fragment = \"a.frag\" }\n[tolerance]\n"
                        "interior = { max_abs = 1e-4, max_rel = 1e-3, reason = \"a tone map's exp\" }\n"
                        "silhouette = { max_abs = 1e-3, reason = \"edges\" }\n");
@@ -58,7 +58,7 @@ TEST(DifferentialCase, ACaseMayStateItsOwnToleranceWithAReason) {
 }
 
 TEST(DifferentialCase, StoredImagesResolveFromTheCaseFolder) {
-  auto c = load_edited("reference = { language = \"hlsl\", backend = \"vulkan\" }", "reference = { images = \"good\" }");
+  auto c = load_differential("reference = { language = \"hlsl\", backend = \"vulkan\" }", "reference = { images = \"good\" }");
   ASSERT_TRUE(c) << message(c);
   EXPECT_TRUE(c->reference_images.ends_with("/good"));
   EXPECT_FALSE(c->reference_render);
@@ -81,7 +81,7 @@ TEST(DifferentialCase, BadReferencesAreErrorsAtTheirLine) {
                             "native GL path of GLSL", "has no cg shaders", "'vertex' is not a variant",
                             "did you mean 'path'", "takes no language", "missing 'model'"};
   for (size_t i = 0; i < std::size(bad); ++i) {
-    auto c = load_edited(bad[i].first, bad[i].second);
+    auto c = load_differential(bad[i].first, bad[i].second);
     ASSERT_FALSE(c) << bad[i].second;
     EXPECT_NE(c.error().message.find(expected[i]), std::string::npos) << c.error().to_string();
     EXPECT_EQ(c.error().stage, "case");
@@ -89,7 +89,7 @@ TEST(DifferentialCase, BadReferencesAreErrorsAtTheirLine) {
 }
 
 TEST(DifferentialCase, AModelCaseStillNeedsItsTolerances) {
-  auto c = load_edited("reference = { language = \"hlsl\", backend = \"vulkan\" }", "model = \"lambert\"");
+  auto c = load_differential("reference = { language = \"hlsl\", backend = \"vulkan\" }", "model = \"lambert\"");
   ASSERT_FALSE(c);
   EXPECT_NE(c.error().message.find("missing [tolerance]"), std::string::npos) << c.error().to_string();
 }

@@ -14,7 +14,7 @@
 namespace sh {
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 std::vector<glm::dvec3> random_directions(int count, std::uint64_t seed) {
   std::mt19937_64 engine(seed);

@@ -19,12 +19,12 @@
 namespace sh {
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 using shaderbed::test::TempDir;
 
 double distance(const glm::dvec3& a, const glm::dvec3& b) { return glm::length(a - b); }
 
-std::vector<glm::dvec3> random_directions(int count) {
+std::vector<glm::dvec3> uniform_latlong_directions(int count) {
   std::mt19937_64 engine(99);
   auto uniform = [&] { return double(engine() >> 11) * 0x1.0p-53; };
   std::vector<glm::dvec3> directions;
@@ -39,7 +39,7 @@ TEST(EnvironmentMapLayout, LatLongIsTheBooksAngles) {
   EXPECT_LT(distance(latlong_direction({0.0, 0.0}), {0, 0, 1}), 1e-15);   // top row: zenith
   EXPECT_LT(distance(latlong_direction({0.0, 0.5}), {1, 0, 0}), 1e-15);   // left edge: phi = 0
   EXPECT_LT(distance(latlong_direction({0.25, 0.5}), {0, 1, 0}), 1e-15);  // phi = pi/2: +y
-  for (const glm::dvec3& d : random_directions(100))
+  for (const glm::dvec3& d : uniform_latlong_directions(100))
     EXPECT_LT(distance(latlong_direction(latlong_coordinates(d)), d), 1e-14);
 }
 
@@ -55,7 +55,7 @@ TEST(EnvironmentMapLayout, AngularIsDebevecsProbeInTheSceneFrame) {
   const glm::dvec2 uv = angular_coordinates(to_sh_frame(d));
   EXPECT_NEAR(uv.x, d.x * r, 1e-15);
   EXPECT_NEAR(uv.y, d.y * r, 1e-15);
-  for (const glm::dvec3& w : random_directions(100))
+  for (const glm::dvec3& w : uniform_latlong_directions(100))
     EXPECT_LT(distance(angular_direction(angular_coordinates(w)), w), 1e-13);
 }
 
@@ -130,7 +130,7 @@ TEST(EnvironmentMapFile, SkyReadBackProjectsLikeTheAnalyticSky) {
   const auto latlong = EnvironmentMap::read(latlong_path, MapLayout::latlong).value();
   const glm::dvec3 b = 0.5 * (sky.zenith - sky.ground), cz = 0.5 * (sky.zenith + sky.ground) - sky.horizon;
   const double h = pi / 256;
-  for (const glm::dvec3& w : random_directions(2000)) {
+  for (const glm::dvec3& w : uniform_latlong_directions(2000)) {
     if (std::acos(glm::dot(w, sky.sun_direction)) < sky.sun_radius + 2 * h) continue;
     const glm::dvec3 error = glm::abs(latlong.lookup(w) - sky(w));
     const glm::dvec3 bound = h * h / 8 * (glm::abs(b) + 2.0 * glm::abs(cz)) + 1e-6;

@@ -14,7 +14,7 @@
 namespace sh {
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 const glm::dvec3 light_direction = glm::normalize(glm::dvec3(0.3, -0.5, 0.8));
 const glm::dvec3 colour{1.0, 0.5, 0.25};

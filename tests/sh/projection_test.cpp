@@ -15,7 +15,7 @@
 namespace sh {
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 // ---- sample sets --------------------------------------------------------------------------
 

@@ -7,9 +7,12 @@
 
 #include "TempDir.h"
 #include "sh/TransferCache.h"
+#include "TransferSceneOf.h"
 
 namespace sh {
 namespace {
+
+using sh::test::make_scene;
 
 // A small box-like object (an octahedron) over a floor: cheap, and with real shadows.
 std::vector<TransferMesh> small_scene(double lift = 0.0) {
@@ -22,12 +25,6 @@ std::vector<TransferMesh> small_scene(double lift = 0.0) {
   }
   object.indices = {0, 2, 4, 4, 2, 1, 1, 2, 5, 5, 2, 0, 0, 4, 3, 4, 1, 3, 1, 5, 3, 5, 0, 3};
   return {object, ground_plane(0.0, 2.0, 4, glm::dvec3(0.5))};
-}
-
-TransferScene make_scene(std::vector<TransferMesh> meshes) {
-  auto scene = TransferScene::create(std::move(meshes));
-  EXPECT_TRUE(scene.has_value()) << (scene ? "" : scene.error());
-  return std::move(*scene);
 }
 
 const TransferOptions base{.kind = TransferKind::interreflected, .bands = 3, .grid = 6, .seed = 2, .bounces = 1};

@@ -12,11 +12,14 @@
 #include "sh/Sampling.h"
 #include "sh/Transfer.h"
 #include "sh/TransferScene.h"
+#include "TransferSceneOf.h"
 
 namespace sh {
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using sh::test::make_scene;
+
+using std::numbers::pi;
 
 // A latitude-longitude sphere (y up, one vertex per pole), normals radial, outward or
 // inward (an enclosure seen from inside).
@@ -58,12 +61,6 @@ TransferMesh points(const std::vector<glm::dvec3>& normals, glm::dvec3 albedo) {
     mesh.normals.push_back(glm::normalize(n));
   }
   return mesh;
-}
-
-TransferScene make_scene(std::vector<TransferMesh> meshes) {
-  auto scene = TransferScene::create(std::move(meshes));
-  EXPECT_TRUE(scene.has_value()) << (scene ? "" : scene.error());
-  return std::move(*scene);
 }
 
 // The ball of radius 0.5 resting 0.02 above the plane y = 0.

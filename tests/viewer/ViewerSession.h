@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "ShellCommand.h"
+#include "FileContents.h"
 #include "TempDir.h"
 #include "imageio/ImageIoModule.h"
 
@@ -30,13 +31,6 @@ extern char** environ;
 namespace shaderbed::test {
 
 namespace fs = std::filesystem;
-
-inline std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 inline bool wait_until(const std::function<bool()>& done, double timeout_s) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);

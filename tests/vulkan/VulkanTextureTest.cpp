@@ -19,14 +19,14 @@ namespace {
 
 using namespace texture_probes;
 
-struct Probe {
+struct UvProbe {
   float u, v = 0.5f, w = 0.5f;
 };
 
 // The sampled value at each probe, from one draw of `program` (which reads the
 // coordinates from the member `coords_member` of a vec4 array).
 Result<std::vector<float>> sample(const CompiledProgram& program, const TextureResolver& textures,
-                                  const std::vector<Probe>& probes, const std::string& coords_member = "coords") {
+                                  const std::vector<UvProbe>& probes, const std::string& coords_member = "coords") {
   if (probes.size() > size_t(kMaxProbes)) return fail("test", "too many probes");
   std::vector<float> coords(size_t(kMaxProbes) * 4, 0.0f);
   for (size_t p = 0; p < probes.size(); ++p) {
@@ -42,7 +42,7 @@ Result<std::vector<float>> sample(const CompiledProgram& program, const TextureR
   return values;
 }
 
-Result<std::vector<float>> sample_glsl(const Texture& texture, const std::vector<Probe>& probes) {
+Result<std::vector<float>> sample_glsl(const Texture& texture, const std::vector<UvProbe>& probes) {
   auto program = compile_glsl(passthrough_vertex_shader, probe_fragment_shader(texture.dimensions));
   if (!program) return std::unexpected(program.error());
   const MapTextureResolver textures({{"lut", texture}});
@@ -54,7 +54,7 @@ const Texture kTexture2D = make_texture("lut2d", 2, 4, 2, 1, {0.1f, 0.7f, 0.35f,
                                                               0.45f, 0.2f, 0.65f, 0.05f}); // row 1
 
 TEST(VulkanTexture, TexelCentresReturnTexelsExactly2D) {
-  std::vector<Probe> probes;
+  std::vector<UvProbe> probes;
   for (int j = 0; j < 2; ++j)
     for (int i = 0; i < 4; ++i) probes.push_back({(i + 0.5f) / 4, (j + 0.5f) / 2});
   auto values = sample_glsl(kTexture2D, probes);
@@ -64,7 +64,7 @@ TEST(VulkanTexture, TexelCentresReturnTexelsExactly2D) {
 
 TEST(VulkanTexture, HalfwayBetweenTexelCentresIsTheMean2D) {
   const Texture& t = kTexture2D;
-  const std::vector<Probe> probes = {
+  const std::vector<UvProbe> probes = {
       {0.25f, 0.25f},  // between (0,0) and (1,0)
       {0.75f, 0.75f},  // between (2,1) and (3,1)
       {0.125f, 0.5f},  // between (0,0) and (0,1)
@@ -83,7 +83,7 @@ TEST(VulkanTexture, HalfwayBetweenTexelCentresIsTheMean2D) {
 
 TEST(VulkanTexture, OutsideTheUnitSquareClampsToTheEdgeTexel2D) {
   const Texture& t = kTexture2D;
-  const std::vector<Probe> probes = {{-0.5f, -0.5f}, {1.5f, 0.25f}, {0.375f, 2.0f}, {-3.0f, 5.0f}, {7.0f, -7.0f}};
+  const std::vector<UvProbe> probes = {{-0.5f, -0.5f}, {1.5f, 0.25f}, {0.375f, 2.0f}, {-3.0f, 5.0f}, {7.0f, -7.0f}};
   const std::vector<float> expected = {texel(t, 0, 0), texel(t, 3, 0), texel(t, 1, 1), texel(t, 0, 1), texel(t, 3, 0)};
   auto values = sample_glsl(t, probes);
   ASSERT_TRUE(values) << values.error().to_string();
@@ -98,7 +98,7 @@ TEST(VulkanTexture, ThreeDimensionalTextureFiltersTrilinearly) {
   for (int k = 0; k < 2; ++k)
     for (int j = 0; j < 2; ++j)
       for (int i = 1; i < 3; ++i) cell_mean += texel(t, i, j, k) / 8.0;
-  const std::vector<Probe> probes = {
+  const std::vector<UvProbe> probes = {
       {0.125f, 0.25f, 0.25f},  // texel (0,0,0)
       {0.625f, 0.75f, 0.75f},  // texel (2,1,1)
       {0.875f, 0.25f, 0.75f},  // texel (3,0,1)
@@ -116,7 +116,7 @@ TEST(VulkanTexture, ThreeDimensionalTextureFiltersTrilinearly) {
 
 TEST(VulkanTexture, OneDimensionalTextureFiltersLinearly) {
   const Texture t = make_texture("ramp", 1, 8, 1, 1, {0.1f, 0.7f, 0.35f, 0.9f, 0.45f, 0.2f, 0.65f, 0.05f});
-  const std::vector<Probe> probes = {{0.0625f}, {0.5625f}, {0.25f}, {0.875f}, {-2.0f}, {3.0f}};
+  const std::vector<UvProbe> probes = {{0.0625f}, {0.5625f}, {0.25f}, {0.875f}, {-2.0f}, {3.0f}};
   auto values = sample_glsl(t, probes);
   ASSERT_TRUE(values) << values.error().to_string();
   EXPECT_EQ((*values)[0], texel(t, 0));

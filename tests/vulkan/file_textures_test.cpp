@@ -14,7 +14,7 @@ namespace {
 
 using namespace file_texture_probes;
 
-Result<std::vector<Rgba>> sample(const CompiledProgram& program, const TextureResolver& textures,
+Result<std::vector<Rgba>> sample_file(const CompiledProgram& program, const TextureResolver& textures,
                                  const std::vector<Probe>& probes) {
   const MapResolver uniforms({{"coords", probe_coords(probes)}});
   auto out = draw_textured(program, full_screen_quad(), uniforms, &textures, int(probes.size()), 1);
@@ -43,11 +43,11 @@ const CompiledProgram& hlsl_program() {
   return p ? *p : empty;
 }
 
-TEST(VulkanFileTexture, NearestAndLinearFiltering) { EXPECT_TRUE(check_filters(sample, glsl_program(), "tex", "tex")); }
-TEST(VulkanFileTexture, WrapClampMirrorBorder) { EXPECT_TRUE(check_address_modes(sample, glsl_program(), "tex", "tex")); }
-TEST(VulkanFileTexture, SrgbIsDecodedWhenSampled) { EXPECT_TRUE(check_srgb(sample, glsl_program(), "tex")); }
-TEST(VulkanFileTexture, MipLevelsAndMipFilter) { EXPECT_TRUE(check_mip_levels(sample, glsl_program(), "tex", "tex")); }
-TEST(VulkanFileTexture, CubeMapFaces) { EXPECT_TRUE(check_cube(sample, glsl_program(true), "tex")); }
+TEST(VulkanFileTexture, NearestAndLinearFiltering) { EXPECT_TRUE(check_filters(sample_file, glsl_program(), "tex", "tex")); }
+TEST(VulkanFileTexture, WrapClampMirrorBorder) { EXPECT_TRUE(check_address_modes(sample_file, glsl_program(), "tex", "tex")); }
+TEST(VulkanFileTexture, SrgbIsDecodedWhenSampled) { EXPECT_TRUE(check_srgb(sample_file, glsl_program(), "tex")); }
+TEST(VulkanFileTexture, MipLevelsAndMipFilter) { EXPECT_TRUE(check_mip_levels(sample_file, glsl_program(), "tex", "tex")); }
+TEST(VulkanFileTexture, CubeMapFaces) { EXPECT_TRUE(check_cube(sample_file, glsl_program(true), "tex")); }
 
 TEST(VulkanFileTexture, Sm5TextureAndSamplerStateAreSeparateDescriptors) {
   const Reflection& r = hlsl_program().fragment.reflection;
@@ -76,13 +76,13 @@ TEST(VulkanFileTexture, SpirvCrossCombinesTheSm5Pair) {
 // The texels come from the Texture2D's texture, the filtering and addressing from the
 // SamplerState's settings: both must reach their own descriptor.
 TEST(VulkanFileTexture, Sm5TextureAndSamplerStateFilter) {
-  EXPECT_TRUE(check_filters(sample, hlsl_program(), "probeTexture", "probeSampler"));
+  EXPECT_TRUE(check_filters(sample_file, hlsl_program(), "probeTexture", "probeSampler"));
 }
 TEST(VulkanFileTexture, Sm5SamplerStateAddressModes) {
-  EXPECT_TRUE(check_address_modes(sample, hlsl_program(), "probeTexture", "probeSampler"));
+  EXPECT_TRUE(check_address_modes(sample_file, hlsl_program(), "probeTexture", "probeSampler"));
 }
 TEST(VulkanFileTexture, Sm5MipLevels) {
-  EXPECT_TRUE(check_mip_levels(sample, hlsl_program(), "probeTexture", "probeSampler"));
+  EXPECT_TRUE(check_mip_levels(sample_file, hlsl_program(), "probeTexture", "probeSampler"));
 }
 
 TEST(VulkanFileTexture, CustomBorderColourIsRefusedByName) {
@@ -90,7 +90,7 @@ TEST(VulkanFileTexture, CustomBorderColourIsRefusedByName) {
   s.address_u = AddressMode::border;
   s.border_color[0] = 0.5f;
   const SettingsResolver resolver({{"tex", strip()}}, {{"tex", s}});
-  auto got = sample(glsl_program(), resolver, {{0.5f, 0.5f}});
+  auto got = sample_file(glsl_program(), resolver, {{0.5f, 0.5f}});
   ASSERT_FALSE(got);
   EXPECT_NE(got.error().message.find("border colour"), std::string::npos) << got.error().to_string();
   EXPECT_NE(got.error().message.find("'tex'"), std::string::npos) << got.error().to_string();
@@ -99,7 +99,7 @@ TEST(VulkanFileTexture, CustomBorderColourIsRefusedByName) {
 TEST(VulkanFileTexture, CubeMapOnA2DSamplerIsAnErrorNamingIt) {
   std::vector<int> bytes(6 * 4, 255);
   const SettingsResolver resolver({{"tex", rgba8("sky", 1, 1, bytes, false, true)}});
-  auto got = sample(glsl_program(), resolver, {{0.5f, 0.5f}});
+  auto got = sample_file(glsl_program(), resolver, {{0.5f, 0.5f}});
   ASSERT_FALSE(got);
   EXPECT_NE(got.error().message.find("cube map"), std::string::npos) << got.error().to_string();
   EXPECT_NE(got.error().message.find("'tex'"), std::string::npos) << got.error().to_string();

@@ -1,5 +1,7 @@
 #include "stats/nir/NirDump.h"
 
+#include <unistd.h>   // environ (glibc declares it with _GNU_SOURCE, which g++ and clang++ set)
+
 #include <cstdlib>
 #include <filesystem>
 #include <vector>
@@ -7,8 +9,6 @@
 #include "core/ThisExecutable.h"
 #include "core/ChildProcess.h"
 #include "core/ScratchDirectory.h"
-
-extern char** environ;
 
 namespace shaderbed {
 namespace {
