@@ -1,10 +1,13 @@
 #pragma once
 // Shared by the Vulkan and GL render-state tests: a small DX9 effect whose pass states a
 // test writes, compiled by the real effect front end, drawn on the book's scene (GLUT
-// shapes, the D3D-style camera) by a real backend with the pass's RenderState, and the
-// image measures the tests compare.
+// shapes, the D3D-style camera) by a real backend with the pass's RenderState, the image
+// measures the tests compare, and the checks both backends run.
+#include <gtest/gtest.h>
+
 #include <array>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <string>
 
@@ -142,6 +145,69 @@ inline int differing_pixels(const Image& a, const Image& b, float tolerance = 1e
     n += differs;
   }
   return n;
+}
+
+
+// A backend's image of `shape` drawn with an effect pass stating `states`, its pixel shader
+// returning `alpha` (each backend's test supplies it).
+using DrawStates = std::function<Image(const std::string& shape, const std::string& states, const std::string& alpha,
+                                       int size)>;
+
+// CCW, D3D's default, culls the back faces of GLUT's shapes under the scene's D3D camera.
+inline void expect_cull_modes(const DrawStates& draw) {
+  const Image none = draw("sphere", "CullMode = NONE;", "1.0", kStateImageSize);
+  const Image ccw = draw("sphere", "CullMode = CCW;", "1.0", kStateImageSize);
+  const Image cw = draw("sphere", "CullMode = CW;", "1.0", kStateImageSize);
+  ASSERT_GT(covered(none), 300);
+  EXPECT_EQ(differing_pixels(none, ccw), 0) << "D3D's default CullMode must only remove hidden faces";
+  EXPECT_GT(differing_pixels(none, cw), covered(none) / 2) << "CW culls the visible faces: the inside shows";
+}
+
+inline void expect_wireframe_covers_fewer_pixels(const DrawStates& draw) {
+  // Large enough that the low-tessellation torus's edges are far apart.
+  const Image solid = draw("torus", "FillMode = SOLID;", "1.0", 128);
+  const Image wire = draw("torus", "FillMode = WIREFRAME;", "1.0", 128);
+  ASSERT_GT(covered(solid), 1000);
+  EXPECT_GT(covered(wire), 0);
+  EXPECT_LT(covered(wire), covered(solid) * 9 / 10) << covered(wire) << " of " << covered(solid);
+}
+
+inline void expect_depth_states_change_the_torus(const DrawStates& draw) {
+  const Image depth = draw("torus", "CullMode = NONE; ZEnable = TRUE;", "1.0", kStateImageSize);
+  const Image no_test = draw("torus", "CullMode = NONE; ZEnable = FALSE;", "1.0", kStateImageSize);
+  const Image no_write = draw("torus", "CullMode = NONE; ZWriteEnable = FALSE;", "1.0", kStateImageSize);
+  EXPECT_GT(differing_pixels(depth, no_test), 20);
+  // One draw into a cleared buffer: without writes every fragment passes, as without the test.
+  EXPECT_EQ(differing_pixels(no_test, no_write), 0);
+  EXPECT_EQ(covered(depth), covered(no_test)) << "coverage is still read from depth";
+}
+
+inline void expect_alpha_blending_with_the_cleared_target(const DrawStates& draw) {
+  const Image opaque = draw("sphere", "AlphaBlendEnable = FALSE;", "0.5", kStateImageSize);
+  const Image blended =
+      draw("sphere", "AlphaBlendEnable = TRUE; SrcBlend = SRCALPHA; DestBlend = INVSRCALPHA;", "0.5", kStateImageSize);
+  ASSERT_EQ(covered(opaque), covered(blended));
+  int checked = 0;
+  for (size_t i = 0; i < opaque.coverage.size(); ++i) {
+    if (!opaque.coverage[i]) continue;
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(blended.rgba[i * 4 + c], 0.5f * opaque.rgba[i * 4 + c], 1e-5f) << i;
+    ++checked;
+  }
+  EXPECT_GT(checked, 300);
+}
+
+// u = 1.25 on a red-green 2x1 texture: WRAP reads red, CLAMP and MIRROR green, BORDER white.
+inline void expect_sampler_address_modes(Backend& backend, std::initializer_list<ShaderPath> paths) {
+  const std::pair<const char*, std::array<float, 4>> expected[] = {
+      {"WRAP", {1, 0, 0, 1}}, {"CLAMP", {0, 1, 0, 1}}, {"MIRROR", {0, 1, 0, 1}}, {"BORDER", {1, 1, 1, 1}}};
+  for (ShaderPath path : paths) {
+    for (const auto& [mode, rgba] : expected) {
+      auto colour = sampled_colour(backend, path, mode);
+      ASSERT_TRUE(colour) << mode << ": " << colour.error().to_string();
+      for (int c = 0; c < 4; ++c)
+        EXPECT_EQ((*colour)[c], rgba[c]) << to_string(path) << " AddressU = " << mode << ", channel " << c;
+    }
+  }
 }
 
 }  // namespace shaderbed::test

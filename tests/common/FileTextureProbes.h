@@ -86,6 +86,16 @@ class SettingsResolver final : public TextureResolver {
   std::map<std::string, SamplerSettings> settings_;
 };
 
+// The first `count` pixels of the image's first row: probe i's colour is pixel i.
+inline std::vector<Rgba> probe_values(const Image& image, int count) {
+  std::vector<Rgba> values;
+  for (int x = 0; x < count; ++x) {
+    const float* p = image.pixel(x, 0);
+    values.push_back({p[0], p[1], p[2], p[3]});
+  }
+  return values;
+}
+
 // What a backend's test provides: one draw of `program` with `textures`, the RGBA of
 // pixel i for probe i.
 using SampleFn = std::function<Result<std::vector<Rgba>>(const CompiledProgram&, const TextureResolver&,

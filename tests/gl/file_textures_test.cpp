@@ -22,12 +22,7 @@ SampleFn sample_on(ShaderPath path) {
     auto out = (*backend)->render(DrawJob{.program = program, .path = path, .mesh = mesh, .uniforms = uniforms,
                                           .width = int(probes.size()), .height = 1, .textures = &textures});
     if (!out) return std::unexpected(out.error());
-    std::vector<Rgba> values;
-    for (int x = 0; x < int(probes.size()); ++x) {
-      const float* p = out->image.pixel(x, 0);
-      values.push_back({p[0], p[1], p[2], p[3]});
-    }
-    return values;
+    return probe_values(out->image, int(probes.size()));
   };
 }
 

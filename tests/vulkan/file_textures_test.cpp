@@ -19,12 +19,7 @@ Result<std::vector<Rgba>> sample_file(const CompiledProgram& program, const Text
   const MapResolver uniforms({{"coords", probe_coords(probes)}});
   auto out = draw_textured(program, full_screen_quad(), uniforms, &textures, int(probes.size()), 1);
   if (!out) return std::unexpected(out.error());
-  std::vector<Rgba> values;
-  for (int x = 0; x < int(probes.size()); ++x) {
-    const float* p = out->image.pixel(x, 0);
-    values.push_back({p[0], p[1], p[2], p[3]});
-  }
-  return values;
+  return probe_values(out->image, int(probes.size()));
 }
 
 const CompiledProgram& glsl_program(bool cube = false) {
