@@ -12,16 +12,6 @@ Result<Backend*> gl_backend() {
   return backend->get();
 }
 
-Result<std::vector<float>> MapResolver::value(const UniformBlock&, const UniformMember& member) const {
-  if (auto it = values_.find(member.name); it != values_.end()) return it->second;
-  return fail("bind", "no value supplied");
-}
-
-Result<const Texture*> MapTextureResolver::texture(const SamplerBinding& sampler) const {
-  if (auto it = textures_.find(sampler.name); it != textures_.end()) return &it->second;
-  return fail("bind", "no texture bound");
-}
-
 Mesh ndc_rectangle(float x0, float y0, float x1, float y1, float z) {
   Mesh mesh;
   mesh.name = "ndc rectangle";

@@ -1,12 +1,12 @@
 #pragma once
-// Shared pieces of the GL backend tests: one real OSMesa backend per test binary, a
-// resolver backed by a name -> values map, NDC-space meshes, and small shader pairs
-// compiled by the real compile stage.
+// Shared pieces of the GL backend tests: one real OSMesa backend per test binary,
+// NDC-space meshes, and small shader pairs compiled by the real compile stage.
 #include <map>
 #include <ostream>
 #include <string>
 #include <vector>
 
+#include "MapResolvers.h"
 #include "backends/Backend.h"
 
 namespace shaderbed {
@@ -19,29 +19,8 @@ namespace shaderbed::gl_test {
 // The process-wide GL backend, created on first use; the error when OSMesa is unusable.
 Result<Backend*> gl_backend();
 
-// Values by member name; anything else is a "no value" error that deliberately does not
-// name the member, so the tests can see the backend add that context.
-class MapResolver final : public UniformResolver {
- public:
-  MapResolver() = default;
-  explicit MapResolver(std::map<std::string, std::vector<float>> values) : values_(std::move(values)) {}
-  Result<std::vector<float>> value(const UniformBlock& block, const UniformMember& member) const override;
-
- private:
-  std::map<std::string, std::vector<float>> values_;
-};
-
-// Textures by sampler name; anything else is a "no texture bound" error that
-// deliberately does not name the sampler, so the tests can see the backend add it.
-class MapTextureResolver final : public TextureResolver {
- public:
-  MapTextureResolver() = default;
-  explicit MapTextureResolver(std::map<std::string, Texture> textures) : textures_(std::move(textures)) {}
-  Result<const Texture*> texture(const SamplerBinding& sampler) const override;
-
- private:
-  std::map<std::string, Texture> textures_;
-};
+using test::MapResolver;
+using test::MapTextureResolver;
 
 // Two triangles covering x0..x1, y0..y1 in NDC at depth z, with normals (0,0,1) and uv.
 Mesh ndc_rectangle(float x0, float y0, float x1, float y1, float z = 0.5f);

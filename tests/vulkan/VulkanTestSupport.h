@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "MapResolvers.h"
 #include "backends/Backend.h"
 #include "backends/UniformPacking.h"
 #include "compile/Compiler.h"
@@ -77,37 +78,8 @@ inline Mesh pixel_rect_quad(int px0, int py0, int px1, int py1, int width, int h
 // Larger than the viewport on every side: covers every pixel.
 inline Mesh full_screen_quad(float z = 0.5f) { return ndc_quad(-1.5f, -1.5f, 1.5f, 1.5f, z); }
 
-// Values by member name. A missing name is an error that deliberately does not repeat
-// the name, so the tests see whether the backend's error says which binding is missing.
-class MapResolver final : public UniformResolver {
- public:
-  MapResolver() = default;
-  MapResolver(std::map<std::string, std::vector<float>> values) : values_(std::move(values)) {}
-  Result<std::vector<float>> value(const UniformBlock&, const UniformMember& member) const override {
-    auto it = values_.find(member.name);
-    if (it == values_.end()) return fail("bind", "no value bound");
-    return it->second;
-  }
-
- private:
-  std::map<std::string, std::vector<float>> values_;
-};
-
-// Textures by sampler name. A missing name is an error that deliberately does not repeat
-// the name, so the tests see whether the backend's error says which sampler it was.
-class MapTextureResolver final : public TextureResolver {
- public:
-  MapTextureResolver() = default;
-  MapTextureResolver(std::map<std::string, Texture> textures) : textures_(std::move(textures)) {}
-  Result<const Texture*> texture(const SamplerBinding& sampler) const override {
-    auto it = textures_.find(sampler.name);
-    if (it == textures_.end()) return fail("bind", "no texture bound");
-    return &it->second;
-  }
-
- private:
-  std::map<std::string, Texture> textures_;
-};
+using test::MapResolver;
+using test::MapTextureResolver;
 
 inline size_t covered_pixel_count(const Image& image) {
   size_t n = 0;

@@ -164,7 +164,14 @@ Result<RenderTarget*> VulkanRenderer::target_for(VkExtent2D extent) {
   return slot.get();
 }
 
+// Every error names the backend, as the GL renderer's do, whichever layer raised it.
 Result<RenderOutput> VulkanRenderer::render(const DrawJob& job) {
+  auto output = render_unlabelled(job);
+  if (!output) return std::unexpected(std::move(output.error()).in_backend("vulkan"));
+  return output;
+}
+
+Result<RenderOutput> VulkanRenderer::render_unlabelled(const DrawJob& job) {
   // Everything that depends only on the job is checked before any Vulkan object exists.
   if (job.path != ShaderPath::spirv)
     return std::unexpected(backend_error(std::string("the vulkan backend runs SPIR-V only, not shader path '") +

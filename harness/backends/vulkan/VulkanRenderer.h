@@ -33,6 +33,7 @@ class VulkanRenderer final : public Backend {
 
  private:
   explicit VulkanRenderer(std::unique_ptr<VulkanDevice> device) : device_(std::move(device)) {}
+  Result<RenderOutput> render_unlabelled(const DrawJob& job);
   Result<RenderTarget*> target_for(VkExtent2D extent);
 
   // Declared first so it is destroyed last, after every object created from it.
