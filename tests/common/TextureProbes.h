@@ -276,8 +276,9 @@ inline void expect_texel_count_error(const TextureBench& bench) {
 
 // The driver's linear filtering against exact interpolation in double, on random R32F
 // textures of the largest sizes the book's LUT cases use (texels uniform in [0, 1), so an
-// error is also relative to the LUT's range). `label` names the driver in the printout.
-inline void expect_filtering_error_below_1e5(const TextureBench& bench, const std::string& label) {
+// error is also relative to the LUT's range): within 1e-5 everywhere. `label` names the
+// driver in the printout.
+inline void expect_filtering_close_to_exact(const TextureBench& bench, const std::string& label) {
   const std::vector<Texture> textures = {
       random_texture("lut1d", 1, 256, 1, 1, 1),
       random_texture("lut2d", 2, 256, 64, 1, 2),
