@@ -147,7 +147,6 @@ inline int differing_pixels(const Image& a, const Image& b, float tolerance = 1e
   return n;
 }
 
-
 // A backend's image of `shape` drawn with an effect pass stating `states`, its pixel shader
 // returning `alpha` (each backend's test supplies it).
 using DrawStates = std::function<Image(const std::string& shape, const std::string& states, const std::string& alpha,

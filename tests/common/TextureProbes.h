@@ -84,7 +84,6 @@ inline std::string measuring_fragment_shader(uint32_t dimensions) {
          "}\n";
 }
 
-
 // ---- The checks both backends run --------------------------------------------------------
 
 // What a backend's test supplies: its compile of a GLSL fragment shader (beside a vertex
