@@ -25,7 +25,7 @@
 #include <string_view>
 #include <vector>
 
-#include "backends/SamplerSettings.h"
+#include "pipeline/SamplerSettings.h"
 #include "core/Error.h"
 
 namespace shaderbed {

@@ -17,8 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "backends/RenderState.h"
-#include "backends/SamplerSettings.h"
+#include "pipeline/RenderState.h"
+#include "pipeline/SamplerSettings.h"
 #include "compile/Compiler.h"
 #include "compile/EffectFile.h"
 

@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "backends/RenderState.h"
+#include "pipeline/RenderState.h"
 #include "compile/EffectFile.h"
 
 namespace shaderbed {

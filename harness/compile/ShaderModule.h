@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "backends/RenderState.h"
-#include "backends/SamplerSettings.h"
+#include "pipeline/RenderState.h"
+#include "pipeline/SamplerSettings.h"
 
 namespace shaderbed {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "hard/Slice.h"
-#include "scene/Mesh.h"
+#include "pipeline/Mesh.h"
 #include "scene/Scene.h"
 
 namespace shaderbed::hard {

@@ -33,7 +33,7 @@
 #include <glm/glm.hpp>
 
 #include "reference/Reference.h"
-#include "scene/Mesh.h"
+#include "pipeline/Mesh.h"
 #include "scene/Scene.h"
 
 namespace shaderbed::hard {

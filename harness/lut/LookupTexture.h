@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "backends/Backend.h"
+#include "pipeline/Texture.h"
 #include "core/Error.h"
 
 namespace shaderbed {

@@ -20,11 +20,11 @@
 #include <string_view>
 #include <vector>
 
-#include "backends/Backend.h"
+#include "pipeline/Texture.h"
 #include "core/Error.h"
 #include "reference/LightingModel.h"
 #include "scene/CaseFile.h"
-#include "scene/Mesh.h"
+#include "pipeline/Mesh.h"
 #include "scene/Scene.h"
 #include "sh/TransferScene.h"
 

@@ -10,7 +10,7 @@
 
 #include <glm/glm.hpp>
 
-#include "backends/Backend.h"
+#include "pipeline/Texture.h"
 
 namespace shaderbed {
 

@@ -6,7 +6,7 @@
 #include "core/Error.h"
 #include "lut/LutTolerance.h"
 #include "scene/CaseFile.h"
-#include "scene/Mesh.h"
+#include "pipeline/Mesh.h"
 #include "scene/Scene.h"
 
 namespace shaderbed {

@@ -4,7 +4,7 @@
 #include "compare/SurfaceSamples.h"
 #include "reference/LightingModel.h"
 #include "scene/CaseFile.h"
-#include "scene/Mesh.h"
+#include "pipeline/Mesh.h"
 #include "scene/Scene.h"
 
 namespace reference {

@@ -10,7 +10,7 @@
 
 #include <glm/glm.hpp>
 
-#include "backends/SamplerSettings.h"
+#include "pipeline/SamplerSettings.h"
 #include "compile/ShaderModule.h"
 #include "core/Error.h"
 #include "scene/Primitives.h"

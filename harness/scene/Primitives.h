@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/Mesh.h"
+#include "pipeline/Mesh.h"
 
 namespace shaderbed {
 

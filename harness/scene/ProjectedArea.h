@@ -23,7 +23,7 @@
 // 1e-6 px and the analytic sphere silhouette to its tessellation error).
 #include <glm/glm.hpp>
 
-#include "scene/Mesh.h"
+#include "pipeline/Mesh.h"
 
 namespace shaderbed {
 

@@ -7,7 +7,7 @@
 
 #include "backends/VertexInputs.h"
 #include "backends/gl/GlError.h"
-#include "scene/Mesh.h"
+#include "pipeline/Mesh.h"
 
 namespace shaderbed::gl {
 namespace {

@@ -6,7 +6,7 @@
 #include "backends/gl/GlObject.h"
 #include "compile/ShaderModule.h"
 #include "core/Error.h"
-#include "scene/Mesh.h"
+#include "pipeline/Mesh.h"
 
 namespace shaderbed::gl {
 

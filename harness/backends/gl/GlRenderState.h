@@ -1,7 +1,7 @@
 #pragma once
 // A draw's RenderState (backends/RenderState.h) as GL state: culling, depth, blending,
 // polygon mode. Applied after GlRenderer's fixed state, before every draw.
-#include "backends/RenderState.h"
+#include "pipeline/RenderState.h"
 #include "backends/gl/GlFunctions.h"
 
 namespace shaderbed::gl {

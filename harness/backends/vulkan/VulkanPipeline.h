@@ -10,7 +10,7 @@
 #include "backends/vulkan/VulkanDevice.h"
 #include "backends/vulkan/VulkanHandles.h"
 #include "backends/vulkan/VulkanVertexInput.h"
-#include "backends/RenderState.h"
+#include "pipeline/RenderState.h"
 #include "compile/ShaderModule.h"
 #include "core/Error.h"
 

@@ -4,7 +4,7 @@
 
 #include "backends/VertexInputs.h"
 #include "backends/vulkan/VulkanResult.h"
-#include "scene/Mesh.h"
+#include "pipeline/Mesh.h"
 
 namespace shaderbed::vulkan {
 

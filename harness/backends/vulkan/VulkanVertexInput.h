@@ -7,7 +7,7 @@
 
 #include "compile/ShaderModule.h"
 #include "core/Error.h"
-#include "scene/Mesh.h"
+#include "pipeline/Mesh.h"
 
 namespace shaderbed::vulkan {
 

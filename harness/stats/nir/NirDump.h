@@ -17,7 +17,7 @@
 //   automatic      gallium_trace on Vulkan, glsl_dump on GL.
 #include <string>
 
-#include "backends/Backend.h"
+#include "pipeline/ShaderPath.h"
 #include "compile/ShaderModule.h"
 #include "core/Error.h"
 #include "stats/nir/NirText.h"

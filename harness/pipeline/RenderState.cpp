@@ -1,4 +1,4 @@
-#include "backends/RenderState.h"
+#include "pipeline/RenderState.h"
 
 #include <fmt/format.h>
 
