@@ -13,7 +13,7 @@
 #include "backends/Backend.h"
 #include "backends/UniformPacking.h"
 #include "compile/Compiler.h"
-#include "scene/Mesh.h"
+#include "pipeline/Mesh.h"
 
 namespace shaderbed::vulkan_test {
 
