@@ -43,6 +43,7 @@ class TextureResolver {
 struct TimingRequest {
   int warmup = 1;
   int runs = 0;
+  bool operator==(const TimingRequest&) const = default;
 };
 
 struct DrawJob {

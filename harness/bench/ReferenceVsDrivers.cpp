@@ -85,14 +85,14 @@ Result<ReferenceVsDrivers> time_reference_against_drivers(const ComparedCell& ce
                                                           const SpeedComparisonOptions& o) {
   // One worker, so the draws have the cores to themselves as the reference does.
   RunOptions run;
-  run.cases_dir = o.cases_dir;
-  run.cases = {cell.case_name};
-  run.variants = {cell.variant};
-  run.shapes = {cell.shape};
-  run.languages = {o.language};
-  run.size = o.size;
-  run.jobs = 1;
-  run.timing = {.warmup = 1, .runs = o.runs};
+  run.select.cases_dir = o.cases_dir;
+  run.select.cases = {cell.case_name};
+  run.select.variants = {cell.variant};
+  run.select.shapes = {cell.shape};
+  run.select.languages = {o.language};
+  run.cell.size = o.size;
+  run.workers.jobs = 1;
+  run.cell.timing = {.warmup = 1, .runs = o.runs};
   auto report = run_suite(run);
   if (!report) return std::unexpected(report.error());
 

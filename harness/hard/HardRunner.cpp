@@ -14,6 +14,7 @@
 
 #include "backends/Backend.h"
 #include "run/CaseUniforms.h"
+#include "run/CellDraw.h"
 #include "run/ProgramCache.h"
 #include "run/CellPlan.h"
 #include "run/ReferenceRender.h"
@@ -250,14 +251,16 @@ class HardRunner {
     if (!*ref) return std::unexpected(ref->error());
     const ScenarioReference& reference = **ref;
 
-    auto bindings = c.bindings.find(language);
-    static const BindingTable no_bindings;
-    const BindingTable& table = bindings == c.bindings.end() ? no_bindings : bindings->second;
+    // Drawn as `run` draws a cell (run/CellDraw.h): the case's textures, attribute map and
+    // the program's render states too; a slice gives its own uniforms, row by row.
+    SceneSetup scene;
+    scene.width = reference.width;
+    scene.height = reference.height;
     const auto draw = [&](const Mesh& m, const NamedValues& named) -> Result<RenderOutput> {
-      CaseUniforms uniforms(table, named, c.path);
-      auto out = (*b.backend)->render(DrawJob{*program, path, m, uniforms, reference.width, reference.height, nullptr});
-      if (!out) return std::unexpected(Error(out.error()).in_backend(b.name + "/" + row.path));
-      return out;
+      auto drawn = draw_cell(**b.backend, {.c = c, .language = language, .path = path, .program = *program, .mesh = m,
+                                           .scene = scene, .values = &named});
+      if (!drawn) return std::unexpected(drawn.error());
+      return RenderOutput{std::move(drawn->image), std::move(drawn->timings)};
     };
     auto rendered = slice && !slice->row_values.empty() ? draw_by_rows(*slice, values, draw) : draw(mesh, values);
     if (!rendered) return std::unexpected(rendered.error());

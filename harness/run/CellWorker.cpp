@@ -12,8 +12,11 @@
 
 #include "report/JsonReport.h"
 #include "run/GroupRunner.h"
+#include "run/Runner.h"
 #include "run/Toolchain.h"
+#include "run/WorkerOptions.h"
 #include "run/WorkerProtocol.h"
+#include "scene/NameFilter.h"
 
 namespace shaderbed {
 namespace {
@@ -46,15 +49,14 @@ bool read_line(std::FILE* in, std::string& line) {
 int serve_cells(std::FILE* commands, int events_fd) {
   std::string line;
   if (!read_line(commands, line)) return 2;
-  auto options = apply_worker_options_line(line);
-  if (!options) {
-    fmt::print(stderr, "shaderbed worker: {}\n", options.error().to_string());
+  auto decoded = decode_worker_options(line);
+  if (!decoded) {
+    fmt::print(stderr, "shaderbed worker: {}\n", decoded.error().to_string());
     return 2;
   }
-  options->on_step = [events_fd](const std::string& cell, const char* step) {
-    send(events_fd, fmt::format("step {} {}", cell, step));
-  };
-  auto plan = plan_suite(*options);
+  apply_process_settings(decoded->process);
+  const RunOptions options{.select = decoded->select, .cell = decoded->cell, .workers = {.jobs = 1}};
+  auto plan = plan_suite(options);
   if (!plan) {
     fmt::print(stderr, "shaderbed worker: {}\n", plan.error().to_string());
     return 2;
@@ -63,14 +65,17 @@ int serve_cells(std::FILE* commands, int events_fd) {
   RunReport hello;
   hello.tools = toolchain(backends);
   send(events_fd, "hello " + to_json_line(hello));
-  auto stored = load_stored_references(*options, (*plan)->cases, hello.tools);
+  auto stored = load_stored_references(options.cell.against_dir, options.cell.size, (*plan)->cases, hello.tools);
   if (!stored) {
     fmt::print(stderr, "shaderbed worker: {}\n", stored.error().to_string());
     return 2;
   }
   SceneSetup scene;
-  scene.width = scene.height = options->size;
-  GroupRunner runner(*options, scene, *stored);
+  scene.width = scene.height = options.cell.size;
+  GroupRunner runner(options.cell, scene, *stored, wanted((*plan)->backend_names, "gl"),
+                     [events_fd](const std::string& cell, const char* step) {
+                       send(events_fd, fmt::format("step {} {}", cell, step));
+                     });
   const CompileCacheCounts before = compile_cache_counts();
 
   // "group INDEX [SKIPPED-CELL-ID...]": the cells already settled by the supervisor (a

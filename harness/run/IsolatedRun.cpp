@@ -21,6 +21,7 @@
 
 #include "core/AddressSanitizer.h"
 #include "core/Elapsed.h"
+#include "run/WorkerOptions.h"
 #include "run/WorkerProtocol.h"
 
 namespace shaderbed {
@@ -124,9 +125,9 @@ Result<Worker> spawn_worker(const RunOptions& o, const std::string& options_line
   std::vector<char*> envp;
   for (std::string& e : env_text) envp.push_back(e.data());
   envp.push_back(nullptr);
-  std::string program = o.worker_binary, verb = "__cell-worker";
+  std::string program = o.workers.worker_binary, verb = "__cell-worker";
   char* argv[] = {program.data(), verb.data(), nullptr};
-  const rlim_t memory = rlim_t(o.worker_memory_mb) << 20;
+  const rlim_t memory = rlim_t(o.workers.worker_memory_mb) << 20;
   const pid_t parent = ::getpid();
 
   const pid_t pid = ::fork();
@@ -180,14 +181,14 @@ std::string end_worker(Worker& w, bool kill_it) {
 class Supervisor {
  public:
   Supervisor(const RunOptions& o, const SuitePlan& plan)
-      : o_(o), plan_(plan), bundles_(bundles_of(plan.groups)), options_line_(worker_options_line(o)) {
+      : o_(o), plan_(plan), bundles_(bundles_of(plan.groups)), options_line_(encode_worker_options(worker_options(o))) {
     for (size_t b = 0; b < bundles_.size(); ++b) queue_.push_back(b);
   }
 
   Result<IsolatedResults> run() {
     SignalGuard signals;
     const int hardware = int(std::max(1u, std::thread::hardware_concurrency()));
-    const size_t count = std::min(bundles_.size(), size_t(o_.jobs > 0 ? o_.jobs : hardware));
+    const size_t count = std::min(bundles_.size(), size_t(o_.workers.jobs > 0 ? o_.workers.jobs : hardware));
     for (size_t i = 0; i < count; ++i) {
       auto w = spawn_worker(o_, options_line_);
       if (!w) return std::unexpected(w.error());
@@ -240,8 +241,8 @@ class Supervisor {
   }
 
   double step_limit_s(const std::string& step) const {
-    if (step == "compile") return o_.compile_timeout_s;
-    if (step == "draw") return o_.draw_timeout_s;
+    if (step == "compile") return o_.workers.compile_timeout_s;
+    if (step == "draw") return o_.workers.draw_timeout_s;
     return 0;
   }
 
@@ -274,7 +275,7 @@ class Supervisor {
       if (n < 0 && (errno == EAGAIN || errno == EINTR)) return {};
       // End of the pipe: the worker is gone.
       const std::string how = end_worker(w, false);
-      if (!w.greeted) return fail("isolation", "the cell worker (" + o_.worker_binary + ") ended before it started: " + how);
+      if (!w.greeted) return fail("isolation", "the cell worker (" + o_.workers.worker_binary + ") ended before it started: " + how);
       lost(w, w.step == "compile" ? "compiler crashed: " + how : "crashed: " + how);
       return {};
     }

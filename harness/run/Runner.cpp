@@ -12,13 +12,12 @@
 #include <fmt/ranges.h>
 
 #include "backends/MesaEnvironment.h"
-#include "prt/ShCase.h"
 #include "compile/CompileCache.h"
 #include "core/BoundedFile.h"
 #include "core/CacheSettings.h"
 #include "core/Elapsed.h"
 #include "core/Fnv1a.h"
-#include "reference/ModelRegistry.h"
+#include "run/ReferenceKinds.h"
 #include "run/CellPlan.h"
 #include "run/Expectations.h"
 #include "run/GroupRunner.h"
@@ -36,18 +35,16 @@ namespace {
 
 // Reads the selected case files, applies --param overrides and checks every name filter.
 Result<std::vector<Case>> select_cases(const RunOptions& o) {
-  auto selected = load_selected_cases(o.cases_dir.empty() ? default_cases_dir() : o.cases_dir, o.cases);
+  const SuiteSelection& s = o.select;
+  auto selected = load_selected_cases(s.cases_dir.empty() ? default_cases_dir() : s.cases_dir, s.cases);
   if (!selected) return std::unexpected(selected.error());
   std::vector<Case> cases = std::move(*selected);
-  // The SH models' parameters a case leaves out take docs/sh.md's defaults.
-  for (Case& c : cases) apply_sh_defaults(c);
-  if (auto ok = apply_parameter_overrides(o.params, o.cases, cases); !ok) return std::unexpected(ok.error());
+  for (Case& c : cases) complete_case(c);
+  if (auto ok = apply_parameter_overrides(s.params, s.cases, cases); !ok) return std::unexpected(ok.error());
   // An unknown model is bad input in the case file, not an error in every one of its cells.
   for (const Case& c : cases)
-    if (!c.differential() && !reference::find_model(c.model) && !is_sh_model(c.model)) {
-      std::string known;
-      for (const std::string& name : reference::model_names()) known += (known.empty() ? "" : ", ") + name;
-      for (const std::string& name : sh_model_names()) known += ", " + name;
+    if (!c.differential() && !is_reference_model(c.model)) {
+      const std::string known = fmt::format("{}", fmt::join(reference_model_names(), ", "));
       return std::unexpected(Error{.message = "unknown model '" + c.model + "' (models: " + known + ")", .file = c.path,
                                    .line = c.model_line, .stage = "case"});
     }
@@ -56,33 +53,34 @@ Result<std::vector<Case>> select_cases(const RunOptions& o) {
     for (const Variant& v : c.variants)
       if (std::find(variant_names.begin(), variant_names.end(), v.name) == variant_names.end())
         variant_names.push_back(v.name);
-  if (auto ok = check_names(o.variants, variant_names, "variant"); !ok) return std::unexpected(ok.error());
-  if (auto ok = check_names(o.backends, {"vulkan", "gl"}, "backend"); !ok) return std::unexpected(ok.error());
-  if (auto ok = check_names(o.languages, {"glsl", "hlsl", "cg"}, "language"); !ok) return std::unexpected(ok.error());
-  if (auto ok = check_names(o.shapes, shape_names(), "shape"); !ok) return std::unexpected(ok.error());
-  if (o.size < 8 || o.size > 4096) return fail("options", fmt::format("--size {} is outside 8..4096", o.size));
+  if (auto ok = check_names(s.variants, variant_names, "variant"); !ok) return std::unexpected(ok.error());
+  if (auto ok = check_names(s.backends, {"vulkan", "gl"}, "backend"); !ok) return std::unexpected(ok.error());
+  if (auto ok = check_names(s.languages, {"glsl", "hlsl", "cg"}, "language"); !ok) return std::unexpected(ok.error());
+  if (auto ok = check_names(s.shapes, shape_names(), "shape"); !ok) return std::unexpected(ok.error());
+  const int size = o.cell.size;
+  if (size < 8 || size > 4096) return fail("options", fmt::format("--size {} is outside 8..4096", size));
   return cases;
 }
 
-// Runs the plan's groups on `o.jobs` threads in this process, each worker with its own
+// Runs the plan's groups on `o.workers.jobs` threads in this process, each worker with its own
 // backends (a Vulkan device and a GL context serve one thread at a time). The first worker
 // starts its backends before the others, and its drivers' versions are the report's.
 std::vector<CellResult> run_in_process(const RunOptions& o, const SceneSetup& scene, SuitePlan& plan,
                                        ToolVersions& tools, int& workers_used) {
   const auto bundles = bundles_of(plan.groups);
   const int hardware = int(std::max(1u, std::thread::hardware_concurrency()));
-  const size_t workers = std::min(bundles.size(), size_t(o.jobs > 0 ? o.jobs : hardware));
+  const size_t workers = std::min(bundles.size(), size_t(o.workers.jobs > 0 ? o.workers.jobs : hardware));
   workers_used = int(workers);
   std::vector<std::vector<BackendSlot>> own(workers);
   own[0] = start_backends(plan.backend_names);
   tools = toolchain(own[0]);
-  auto stored = load_stored_references(o, plan.cases, tools);
+  auto stored = load_stored_references(o.cell.against_dir, o.cell.size, plan.cases, tools);
   if (!stored) return {};   // checked when planned; a folder removed since then runs nothing
   std::mutex mutex;   // guards next, results, o.on_cell
   size_t next = 0;
   std::vector<CellResult> results;
   const auto work = [&](std::vector<BackendSlot>& backends) {
-    GroupRunner runner(o, scene, *stored);
+    GroupRunner runner(cell_settings(o), scene, *stored, wanted(plan.backend_names, "gl"), o.on_step);
     for (;;) {
       size_t b;
       {
@@ -156,20 +154,22 @@ Result<std::unique_ptr<SuitePlan>> plan_suite(const RunOptions& o) {
     plan->known = std::move(*loaded);
   }
   std::optional<Shard> shard;
-  if (!o.shard.empty()) {
-    auto parsed = parse_shard(o.shard);
+  if (!o.select.shard.empty()) {
+    auto parsed = parse_shard(o.select.shard);
     if (!parsed) return std::unexpected(parsed.error());
     shard = *parsed;
   }
-  plan->backend_names = backends_to_start(plan->cases, o.backends);
+  const SuiteSelection& s = o.select;
+  plan->backend_names = backends_to_start(plan->cases, s.backends);
   for (const char* name : {"vulkan", "gl"})
     if (wanted(plan->backend_names, name)) plan->backends.push_back({name});
-  plan->groups = plan_cells(plan->cases, plan->backends, {o.variants, o.languages, o.shapes, o.backends});
+  plan->groups = plan_cells(plan->cases, plan->backends, {s.variants, s.languages, s.shapes, s.backends});
   if (plan->groups.empty()) return fail("options", "the filters select no cells");
   if (shard) plan->groups = select_shard(std::move(plan->groups), *shard);
   for (const CellGroup& g : plan->groups) plan->cells += g.cells.size();
   // Stored runs are checked (folder, manifest, image size) before anything is drawn.
-  if (auto stored = load_stored_references(o, plan->cases, {}); !stored) return std::unexpected(stored.error());
+  if (auto stored = load_stored_references(o.cell.against_dir, o.cell.size, plan->cases, {}); !stored)
+    return std::unexpected(stored.error());
   return plan;
 }
 
@@ -178,10 +178,11 @@ namespace {
 // Which run the results belong to: the selected case files' text and every option that
 // decides the cells and their images, but not the shard, so a run's shards share it.
 std::string run_identity(const RunOptions& o, const SuitePlan& plan) {
-  std::string text = fmt::format("size {} warmup {} runs {} slices {} relaxed {} per-pixel {} against {}|", o.size,
-                                 o.timing.warmup, o.timing.runs, o.mesh_slices, o.relaxed_precision,
-                                 o.per_pixel_reference, o.against_dir);
-  for (const auto* list : {&o.variants, &o.backends, &o.languages, &o.shapes, &o.params})
+  const CellSettings& cell = o.cell;
+  std::string text = fmt::format("size {} warmup {} runs {} slices {} relaxed {} per-pixel {} against {}|", cell.size,
+                                 cell.timing.warmup, cell.timing.runs, cell.mesh_slices, cell.relaxed_precision,
+                                 cell.per_pixel_reference, cell.against_dir);
+  for (const auto* list : {&o.select.variants, &o.select.backends, &o.select.languages, &o.select.shapes, &o.select.params})
     text += fmt::format("{}|", fmt::join(*list, ","));
   for (const Case& c : plan.cases) text += c.name + "\n" + read_bounded_file(c.path, "case file", "case").value_or("") + "|";
   return hex64(fnv1a64(text));
@@ -197,12 +198,12 @@ Result<RunReport> run_suite(const RunOptions& o) {
 
   RunReport report;
   report.run_id = run_identity(o, **plan);
-  report.out_dir = o.out_dir;
-  report.shard = o.shard;
+  report.out_dir = o.cell.out_dir;
+  report.shard = o.select.shard;
   SceneSetup scene;
-  scene.width = scene.height = o.size;
+  scene.width = scene.height = o.cell.size;
   CompileCacheCounts compiles;
-  if (o.worker_binary.empty()) {
+  if (o.workers.worker_binary.empty()) {
     report.results = run_in_process(o, scene, **plan, report.tools, report.workers);
     compiles = compile_cache_counts() - compiles_before;
   } else {
@@ -223,8 +224,9 @@ Result<RunReport> run_suite(const RunOptions& o) {
                           caches.compile_enabled() ? caches.compile_dir() : "", compiles.hits(), compiles.misses(),
                           compiles.memory_hits};
   report.wall_ms = ms_since(start);
-  if (!o.save_images_dir.empty())
-    if (auto ok = write_stored_manifest(o.save_images_dir, report, o.size); !ok) return std::unexpected(ok.error());
+  if (!o.cell.save_images_dir.empty())
+    if (auto ok = write_stored_manifest(o.cell.save_images_dir, report, o.cell.size); !ok)
+      return std::unexpected(ok.error());
   return report;
 }
 

@@ -161,4 +161,22 @@ std::string toolchain_difference(const ToolVersions& stored, const ToolVersions&
   return out;
 }
 
+Result<StoredReferences> load_stored_references(const std::string& against_dir, int size,
+                                                const std::vector<Case>& cases, const ToolVersions& tools) {
+  StoredReferences stored;
+  std::vector<std::string> dirs;
+  if (!against_dir.empty()) dirs.push_back(against_dir);
+  else
+    for (const Case& c : cases)
+      if (!c.reference_images.empty()) dirs.push_back(c.reference_images);
+  for (const std::string& dir : dirs) {
+    if (stored.runs.contains(dir)) continue;
+    auto run = load_stored_run(dir, size);
+    if (!run) return std::unexpected(Error(run.error()).in_stage(against_dir.empty() ? "case" : "--against"));
+    stored.toolchain_notes[dir] = toolchain_difference(run->tools, tools);
+    stored.runs.emplace(dir, std::move(*run));
+  }
+  return stored;
+}
+
 }  // namespace shaderbed

@@ -7,11 +7,13 @@
 // images drawn on real hardware.
 #include <map>
 #include <string>
+#include <vector>
 
 #include "compare/ImageComparison.h"
 #include "core/Error.h"
 #include "core/Image.h"
 #include "report/Results.h"
+#include "scene/CaseFile.h"
 
 namespace shaderbed {
 
@@ -46,6 +48,17 @@ Result<StoredRun> load_stored_run(const std::string& dir, int size);
 
 // The stored image of cell `id` as a reference (coverage from its fifth channel).
 Result<ReferenceImage> load_stored_image(const StoredRun& run, const std::string& id, const std::string& scene);
+
+// The stored runs a run compares with, loaded (and checked) before anything is drawn.
+struct StoredReferences {
+  std::map<std::string, StoredRun> runs;                  // by folder
+  std::map<std::string, std::string> toolchain_notes;     // by folder: "" when drawn alike
+};
+
+// Every stored run `against_dir` (--against) or else the cases name, checked against the
+// run's image size `size`; a different toolchain is noted, not refused.
+Result<StoredReferences> load_stored_references(const std::string& against_dir, int size,
+                                                const std::vector<Case>& cases, const ToolVersions& tools);
 
 // "" when the toolchains drew alike, else what differs ("Mesa 23.1 (stored) vs 22.3.6").
 std::string toolchain_difference(const ToolVersions& stored, const ToolVersions& now);

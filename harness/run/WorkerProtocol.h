@@ -1,7 +1,7 @@
 #pragma once
 // What an isolated run's supervisor and its worker processes say to each other
 // (run/IsolatedRun.h). The supervisor writes the run's options as one JSON line on the
-// worker's stdin, then one command a line: "group INDEX [SKIPPED-CELL-ID...]" runs a group
+// worker's stdin (run/WorkerOptions.h), then one command a line: "group INDEX [SKIPPED-CELL-ID...]" runs a group
 // of the plan both sides make from the same options. The worker answers on its events pipe,
 // one line each:
 //   hello <RunReport JSON: the toolchain of the backends it started>
@@ -13,16 +13,9 @@
 
 #include "compile/CompileCache.h"
 #include "core/Error.h"
-#include "run/Runner.h"
+#include "report/Results.h"
 
 namespace shaderbed {
-
-// The options a worker needs, with the process-wide settings the command line set (the
-// cache folder and switches, --vulkan-device), as one line of JSON.
-std::string worker_options_line(const RunOptions& options);
-
-// Reads that line and applies its process-wide settings to this process.
-Result<RunOptions> apply_worker_options_line(std::string_view line);
 
 struct WorkerEvent {
   enum class Kind { hello, step, cell, done, unknown } kind = Kind::unknown;

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "prt/ShCase.h"
+#include "run/ReferenceKinds.h"
 #include "run/Runner.h"
 #include "plot/ParetoFront.h"
 #include "scene/CaseSelection.h"
@@ -119,7 +120,7 @@ Result<SweepResult> run_sweep(const SweepOptions& o) {
   const std::string dir = o.cases_dir.empty() ? default_cases_dir() : o.cases_dir;
   auto cases = load_selected_cases(dir, {o.case_name});
   if (!cases) return std::unexpected(cases.error());
-  apply_sh_defaults(cases->front());
+  complete_case(cases->front());
   const Case* c = &cases->front();
   if (auto ok = check_axes(*c, o.axes); !ok) return std::unexpected(ok.error());
   std::vector<std::string> variant_names;
@@ -129,15 +130,15 @@ Result<SweepResult> run_sweep(const SweepOptions& o) {
   if (auto ok = check_names(precisions, {"fp32", "relaxed"}, "precision"); !ok) return std::unexpected(ok.error());
 
   RunOptions run;
-  run.cases_dir = dir;
-  run.cases = {o.case_name};
-  run.languages = o.languages.empty() ? default_languages(*c) : o.languages;
-  run.backends = o.backends.empty() ? std::vector<std::string>{"vulkan"} : o.backends;
-  run.shapes = o.shapes.empty() ? std::vector<std::string>{"sphere"} : o.shapes;
-  run.size = o.size;
-  run.timing = o.timing;
-  run.jobs = 1;
-  run.per_pixel_reference = true;
+  run.select.cases_dir = dir;
+  run.select.cases = {o.case_name};
+  run.select.languages = o.languages.empty() ? default_languages(*c) : o.languages;
+  run.select.backends = o.backends.empty() ? std::vector<std::string>{"vulkan"} : o.backends;
+  run.select.shapes = o.shapes.empty() ? std::vector<std::string>{"sphere"} : o.shapes;
+  run.cell.size = o.size;
+  run.cell.timing = o.timing;
+  run.workers.jobs = 1;
+  run.cell.per_pixel_reference = true;
 
   struct Step {
     std::vector<double> values;
@@ -162,14 +163,14 @@ Result<SweepResult> run_sweep(const SweepOptions& o) {
   for (size_t s = 0; s < steps.size(); ++s) {
     const Step& step = steps[s];
     RunOptions point = run;
-    point.variants = step.variants;
-    point.relaxed_precision = step.precision == "relaxed";
+    point.select.variants = step.variants;
+    point.cell.relaxed_precision = step.precision == "relaxed";
     std::vector<std::string> label;
     for (size_t a = 0; a < o.axes.size(); ++a) {
       const std::string value = format_axis_value(step.values[a]);
       label.push_back(o.axes[a].name + "=" + value);
-      if (o.axes[a].name == kTessellationAxis) point.mesh_slices = int(step.values[a]);
-      else point.params.push_back(o.axes[a].name + "=" + value);
+      if (o.axes[a].name == kTessellationAxis) point.cell.mesh_slices = int(step.values[a]);
+      else point.select.params.push_back(o.axes[a].name + "=" + value);
     }
     label.push_back(step.precision);
     if (o.on_step) o.on_step(s, steps.size(), fmt::format("{}", fmt::join(label, " ")));

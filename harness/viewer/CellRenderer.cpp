@@ -7,13 +7,11 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "core/CacheSettings.h"
 #include "core/Elapsed.h"
 #include "lut/LookupTexture.h"
 #include "lut/LutTolerance.h"
-#include "run/CaseTextures.h"
-#include "run/CaseUniforms.h"
-#include "run/LutScale.h"
+#include "run/CellDraw.h"
+#include "run/LutDomain.h"
 #include "run/ReferenceRender.h"
 #include "scene/Primitives.h"
 #include "scene/ProjectedArea.h"
@@ -35,10 +33,6 @@ std::optional<ShaderPath> parse_path(const std::string& text) {
   return std::nullopt;
 }
 
-ReferenceImage as_reference(const Image& image) {
-  return {image.width, image.height, std::vector<double>(image.rgba.begin(), image.rgba.end()), image.coverage};
-}
-
 // The Cg and GLSL frameworks' "OpenGL shading": fixed-function Gouraud, i.e. Lambert
 // evaluated at the vertices and interpolated, here by the reference's own rasteriser.
 Case gouraud_case(const Case& c) {
@@ -54,17 +48,44 @@ Case gouraud_case(const Case& c) {
 
 }  // namespace
 
+// What the case's reference may ask to draw: the original, as the frame's own cell is drawn.
+class CellRenderer::Drawer final : public GroupDrawer {
+ public:
+  Drawer(CellRenderer& renderer, const CellGroup& group, const Mesh& mesh, const SceneSetup& scene)
+      : renderer_(renderer), group_(group), mesh_(mesh), scene_(scene) {}
+  const DrawAdditions* additions = nullptr;
+
+  CellResult row(const PlannedCell& cell, const ReferenceSource& source) const override {
+    return {.case_name = group_.c->name, .variant = group_.variant->name, .language = to_string(cell.language),
+            .backend = cell.backend->name, .path = to_string(cell.path), .shape = group_.shape, .reference = source};
+  }
+  Result<Image> draw(const Variant& variant, const PlannedCell& cell, const TimingRequest&, CellResult&,
+                     const Variation& variation) override {
+    auto drawn = renderer_.draw_program(*group_.c, variant, cell.language, *cell.backend, cell.path, mesh_, scene_,
+                                        false, additions, variation);
+    if (!drawn) return std::unexpected(drawn.error());
+    return std::move(drawn->image);
+  }
+
+ private:
+  CellRenderer& renderer_;
+  const CellGroup& group_;
+  const Mesh& mesh_;
+  const SceneSetup& scene_;
+};
+
 CellRenderer::CellRenderer(std::string probe_binary)
-    : probe_(std::move(probe_binary)), programs_(std::make_unique<ProgramCache>(ProgramOptions{.opengl = true})) {}
+    : probe_(std::move(probe_binary)),
+      programs_(std::make_unique<ProgramCache>(ProgramOptions{.opengl = true})),
+      references_(std::make_unique<ReferenceKinds>(no_stored_)) {}
 
 CellRenderer::~CellRenderer() = default;
 
-Result<Backend*> CellRenderer::backend(const std::string& name) {
+BackendSlot& CellRenderer::backend(const std::string& name) {
   auto it = backends_.find(name);
   if (it == backends_.end())
-    it = backends_.emplace(name, name == "vulkan" ? make_vulkan_backend() : make_gl_backend()).first;
-  if (!it->second) return std::unexpected(Error(it->second.error()).in_backend(name));
-  return it->second->get();
+    it = backends_.emplace(name, BackendSlot{name, name == "vulkan" ? make_vulkan_backend() : make_gl_backend()}).first;
+  return it->second;
 }
 
 Result<const Texture*> CellRenderer::lut_of(const Case& c, const Variant& variant) {
@@ -80,53 +101,34 @@ Result<const Texture*> CellRenderer::lut_of(const Case& c, const Variant& varian
   return &*it->second;
 }
 
-// As the runner's draw_cell (run/GroupRunner.cpp): the program, the case's uniforms and
-// textures for the language, the program's render state, the case's vertex attributes.
+// Compiled by the probe first (viewer/CompileProbe.h), then drawn as `run` draws a cell.
 Result<CellRenderer::Drawn> CellRenderer::draw_program(const Case& c, const Variant& variant, Language language,
-                                                       const std::string& backend_name, ShaderPath path,
-                                                       const Mesh& mesh, const SceneSetup& scene, bool wireframe,
-                                                       const Texture* lut, const ShPrepared* sh) {
+                                                       BackendSlot& slot, ShaderPath path, const Mesh& mesh,
+                                                       const SceneSetup& scene, bool wireframe,
+                                                       const DrawAdditions* additions, const Variation& variation) {
   const std::string key = c.name + "/" + variant.name + "/" + to_string(language);
-  auto device = backend(backend_name);   // first, so it starts while the probe compiles
-  if (!device) return std::unexpected(device.error());
+  if (!slot.backend) return std::unexpected(Error(slot.backend.error()).in_backend(slot.name));
   if (!probed_.contains(key)) {
     if (auto ok = probe_.compile(c, variant, language); !ok) return std::unexpected(ok.error());
     probed_.insert(key);
   }
   const CachedProgram& compiled = programs_->get(c, variant, language);
   if (!compiled.program) return std::unexpected(compiled.program.error());
-
-  static const BindingTable no_bindings;
-  const auto bindings = c.bindings.find(language);
-  const BindingTable& table = bindings == c.bindings.end() ? no_bindings : bindings->second;
-  NamedValues values = bindable_values(scene, c);
-  if (sh) values.insert(sh->uniforms.begin(), sh->uniforms.end());
-  CaseUniforms uniforms(table, std::move(values), c.path);
-  if (auto bound = uniforms.check_all_bound(*compiled.program); !bound) return std::unexpected(bound.error());
-  CaseTextures textures(table, c.textures.for_language(language), lut, c.path, &compiled.program->sampler_settings,
-                        sh ? &sh->textures : nullptr);
-  if (auto ok = textures.check(*compiled.program); !ok) return std::unexpected(ok.error());
-  DrawJob job{*compiled.program, path, mesh, uniforms, scene.width, scene.height, &textures, {.warmup = 0, .runs = 0}};
-  job.render_state = compiled.program->render_state;
-  if (wireframe) job.render_state.fill = FillMode::wireframe;
-  const auto attributes = c.attributes.find(language);
-  if (attributes != c.attributes.end()) job.attributes = &attributes->second;
-  auto rendered = (*device)->render(job);
-  if (!rendered) return std::unexpected(Error(rendered.error()).in_backend(backend_name + "/" + to_string(path)));
-  return Drawn{std::move(rendered->image), rendered->timings.draw_ms + rendered->timings.readback_ms};
-}
-
-Result<const ShPrepared*> CellRenderer::sh_of(const Case& c, const std::string& mesh_key, const SceneSetup& scene) {
-  std::string key = c.path + "|" + mesh_key + "|" + fmt::format("{},{},{}", scene.lights.direction.x,
-                                                                 scene.lights.direction.y, scene.lights.direction.z);
-  for (const auto& [name, values] : c.params) key += fmt::format("|{}={}", name, fmt::join(values, ","));
-  if (!sh_ || key != sh_key_) {
-    const std::string root = cache_settings().root;
-    sh_ = prepare_sh(c, meshes_.at(mesh_key), scene, root.empty() ? std::filesystem::path() : std::filesystem::path(root) / "sh");
-    sh_key_ = key;
-  }
-  if (!*sh_) return std::unexpected((*sh_).error());
-  return &**sh_;
+  auto lut = lut_of(c, variant);
+  if (!lut) return std::unexpected(lut.error());
+  auto drawn = draw_cell(**slot.backend, {.c = c,
+                                          .language = language,
+                                          .path = path,
+                                          .program = *compiled.program,
+                                          .mesh = mesh,
+                                          .scene = variation.scene ? *variation.scene : scene,
+                                          .lut = *lut,
+                                          .additions = additions,
+                                          .bindings = variation.bindings,
+                                          .flip_images = variation.flip_images,
+                                          .fill = wireframe ? std::optional(FillMode::wireframe) : std::nullopt});
+  if (!drawn) return std::unexpected(drawn.error());
+  return Drawn{std::move(drawn->image), drawn->timings.draw_ms + drawn->timings.readback_ms};
 }
 
 Frame CellRenderer::draw(const FrameRequest& request) {
@@ -139,10 +141,11 @@ Frame CellRenderer::draw(const FrameRequest& request) {
     programs_ = std::make_unique<ProgramCache>(ProgramOptions{.opengl = true});
     probed_.clear();
     luts_.clear();
+    references_ = std::make_unique<ReferenceKinds>(no_stored_);
   }
   probe_.prepare();   // its start-up overlaps the backend's, on the first frame
   Case c = with_parameters(*request.c, s);
-  apply_sh_defaults(c);
+  complete_case(c);
   const auto finish = [&](Frame& f) -> Frame {
     f.frame_ms = ms_since(t0);
     return std::move(f);
@@ -162,16 +165,30 @@ Frame CellRenderer::draw(const FrameRequest& request) {
     if (!mesh) return failed(Error{.message = "unknown shape '" + s.shape_name() + "'", .stage = "options"});
     meshes_.emplace(mesh_key, std::move(*mesh));
   }
+  const Mesh& shape = meshes_.at(mesh_key);
   const SceneSetup scene = scene_of(s, request.size);
-  // An SH case draws the shape with its transfer streams, uniforms and textures (harness/prt).
-  const ShPrepared* sh = nullptr;
-  if (is_sh_model(c.model)) {
-    if (request.sources_changed) sh_.reset();
-    auto prepared = sh_of(c, mesh_key, scene);
-    if (!prepared) return failed(prepared.error());
-    sh = *prepared;
+  const glm::dmat4 clip_from_object =
+      projection_matrix(scene.camera, double(scene.width) / scene.height) * view_matrix(scene.camera) * scene.world;
+  const double area = projected_area_pixels(shape, clip_from_object, scene.width, scene.height);
+
+  // The frame's cell as a group of one, with the original's cell when the case has one.
+  BackendSlot& slot = backend(s.backend);   // first, so it starts while the probe compiles
+  CellGroup group{.c = &c, .variant = variant, .shape = s.shape_name(), .cells = {{s.language, &slot, s.path}}};
+  if (c.reference_render) {
+    const RenderReference& r = *c.reference_render;
+    const Variant* original = r.variant.empty() ? variant : find_variant(c, r.variant);
+    const auto path = parse_path(r.path);
+    if (original && original->shaders.contains(r.language) && path) {
+      group.reference_cell = PlannedCell{r.language, &backend(r.backend), *path};
+      group.reference_variant = original;
+    }
   }
-  const Mesh& mesh = sh ? sh->mesh : meshes_.at(mesh_key);
+  const CellSettings settings;
+  const GroupScene group_scene{group, mesh_key, shape, scene, settings, area};
+  // What the case's reference adds to its draws (an SH case's transfer streams and light).
+  const Result<const DrawAdditions*> additions = references_->draw_inputs(group_scene);
+  if (!additions) return failed(additions.error());
+  const Mesh& mesh = *additions && (*additions)->mesh ? *(*additions)->mesh : shape;
 
   // The thresholds, widened for a LUT variant by its bound over what this shape shows.
   auto lut = lut_of(c, *variant);
@@ -195,7 +212,7 @@ Frame CellRenderer::draw(const FrameRequest& request) {
   // The image: the shader's (also in Gouraud mode with wireframe: its lines are the mask).
   std::optional<Drawn> shader;
   if (!s.gouraud || s.wireframe) {
-    auto drawn = draw_program(c, *variant, s.language, s.backend, s.path, mesh, scene, s.wireframe, *lut, sh);
+    auto drawn = draw_program(c, *variant, s.language, slot, s.path, shape, scene, s.wireframe, *additions);
     if (!drawn) return failed(drawn.error());
     frame.draw_ms = drawn->draw_ms;
     shader = std::move(*drawn);
@@ -212,32 +229,16 @@ Frame CellRenderer::draw(const FrameRequest& request) {
     frame.render = std::move(shader->image);
   }
 
-  // The reference: the model in double, or a differential case's original drawn alike.
-  if (!c.reference_images.empty()) {
-    frame.reference_problem = "the case's reference is stored images (" + c.reference_images +
-                              "): the viewer draws only model and original references";
-  } else if (sh) {   // the truncated SH in double, as run judges it
-    auto reference = render_reference(mesh, scene, c, variant->mode, *sh->truncated);
-    if (reference) frame.reference = std::move(*reference);
-    else frame.reference_problem = reference.error().to_string();
-  } else if (!c.differential()) {
-    auto reference = render_reference(mesh, scene, c, variant->mode);
-    if (reference) frame.reference = std::move(*reference);
-    else frame.reference_problem = reference.error().to_string();
-  } else if (c.reference_render) {
-    const RenderReference& r = *c.reference_render;
-    const Variant* original = r.variant.empty() ? variant : find_variant(c, r.variant);
-    const auto path = parse_path(r.path);
-    if (!original || !original->shaders.contains(r.language) || !path) {
-      frame.reference_problem = fmt::format("the original ({} {}/{}) is not in the case", to_string(r.language),
-                                            r.backend, r.path);
-    } else {
-      auto lut_original = lut_of(c, *original);
-      auto drawn = lut_original ? draw_program(c, *original, r.language, r.backend, *path, mesh, scene, false, *lut_original)
-                                : Result<Drawn>(std::unexpected(lut_original.error()));
-      if (drawn) frame.reference = as_reference(drawn->image);
-      else frame.reference_problem = "the original could not be drawn: " + drawn.error().to_string();
-    }
+  // The reference, as `run` judges the cell (run/CellReference.h).
+  Drawer drawer(*this, group, shape, scene);
+  drawer.additions = *additions;
+  const std::unique_ptr<CellReference> reference = references_->prepare(group_scene, drawer);
+  if (const Result<ReferenceImage>* image = reference->group_image()) {
+    if (*image) frame.reference = **image;
+    else frame.reference_problem = image->error().to_string();
+  } else {
+    frame.reference_problem = "the case's reference is " + reference->source().label +
+                              ": the viewer draws only model and original references";
   }
 
   if (!frame.reference) {
@@ -245,9 +246,6 @@ Frame CellRenderer::draw(const FrameRequest& request) {
     frame.detail = frame.reference_problem;
     return finish(frame);
   }
-  const glm::dmat4 clip_from_object =
-      projection_matrix(scene.camera, double(scene.width) / scene.height) * view_matrix(scene.camera) * scene.world;
-  const double area = projected_area_pixels(mesh, clip_from_object, scene.width, scene.height);
   Comparison cmp = compare_images(*frame.render, *frame.reference, thresholds, area);
   frame.max_error = cmp.interior.max_abs;
   frame.tolerance_share = cmp.interior_tolerance_share;

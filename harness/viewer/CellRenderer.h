@@ -18,8 +18,9 @@
 
 #include "backends/Backend.h"
 #include "compare/ImageComparison.h"
-#include "prt/ShCase.h"
+#include "run/CellPlan.h"
 #include "run/ProgramCache.h"
+#include "run/ReferenceKinds.h"
 #include "scene/CaseFile.h"
 #include "viewer/CompileProbe.h"
 #include "viewer/ViewerState.h"
@@ -67,24 +68,22 @@ class CellRenderer {
     Image image;
     double draw_ms = 0;
   };
-  // `sh`: an SH case's prepared inputs (harness/prt), whose mesh `mesh` is; else null.
-  Result<Drawn> draw_program(const Case& c, const Variant& variant, Language language, const std::string& backend,
+  class Drawer;
+  // `additions`: what the case's reference adds to its draws (run/CellDraw.h); may be null.
+  Result<Drawn> draw_program(const Case& c, const Variant& variant, Language language, BackendSlot& slot,
                              ShaderPath path, const Mesh& mesh, const SceneSetup& scene, bool wireframe,
-                             const Texture* lut, const ShPrepared* sh = nullptr);
-  // An SH case's inputs and references for this shape, parameters and light, prepared
-  // once and kept until one of them changes.
-  Result<const ShPrepared*> sh_of(const Case& c, const std::string& mesh_key, const SceneSetup& scene);
-  Result<Backend*> backend(const std::string& name);
+                             const DrawAdditions* additions, const Variation& variation = {});
+  BackendSlot& backend(const std::string& name);   // started on first use
   Result<const Texture*> lut_of(const Case& c, const Variant& variant);
 
   CompileProbe probe_;
   std::unique_ptr<ProgramCache> programs_;
-  std::set<std::string> probed_;                                         // case/variant/language since the last change
-  std::map<std::string, Result<std::unique_ptr<Backend>>> backends_;    // started on first use
-  std::map<std::string, Mesh> meshes_;                                   // shape/tessellation
-  std::map<std::string, Result<Texture>> luts_;                          // variant and parameters
-  std::string sh_key_;                                                   // what sh_ was prepared for
-  std::optional<Result<ShPrepared>> sh_;
+  std::set<std::string> probed_;                           // case/variant/language since the last change
+  std::map<std::string, BackendSlot> backends_;            // by name
+  std::map<std::string, Mesh> meshes_;                     // shape/tessellation
+  std::map<std::string, Result<Texture>> luts_;            // variant and parameters
+  StoredReferences no_stored_;                             // the viewer loads no stored run
+  std::unique_ptr<ReferenceKinds> references_;             // made anew when the sources change
 };
 
 }  // namespace shaderbed::viewer

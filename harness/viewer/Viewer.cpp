@@ -39,10 +39,10 @@ Result<Case> load_view_case(const ViewerOptions& o) {
     name = phong ? "phong" : fs::path(files->front()).stem().string();
   }
   RunOptions run;
-  run.cases_dir = o.cases_dir;
-  run.cases = {name};
-  run.params = o.params;
-  run.size = o.size;
+  run.select.cases_dir = o.cases_dir;
+  run.select.cases = {name};
+  run.select.params = o.params;
+  run.cell.size = o.size;
   auto plan = plan_suite(run);
   if (!plan) return std::unexpected(plan.error());
   return std::move((*plan)->cases.front());

@@ -15,12 +15,12 @@ inline const std::filesystem::path kRealWorld = std::filesystem::path(SHADERBED_
 
 inline RunOptions quick_run(const std::string& cases_dir, const std::string& case_name, int size = 48) {
   RunOptions o;
-  o.cases_dir = cases_dir;
-  o.cases = {case_name};
-  o.shapes = {"sphere", "torus"};
-  o.size = size;
-  o.jobs = 1;
-  o.timing = {.warmup = 0, .runs = 0};
+  o.select.cases_dir = cases_dir;
+  o.select.cases = {case_name};
+  o.select.shapes = {"sphere", "torus"};
+  o.cell.size = size;
+  o.workers.jobs = 1;
+  o.cell.timing = {.warmup = 0, .runs = 0};
   return o;
 }
 

@@ -80,10 +80,10 @@ TEST(EndToEnd, EvalPrintsTheReferenceValue) {
 TEST(EndToEnd, ParamOverrideReachesShadersAndReference) {
   // A different exponent changes both sides; they must still agree.
   RunOptions o;
-  o.cases = {"phong"};
-  o.variants = {"pixel"};
-  o.shapes = {"sphere"};
-  o.params = {"power=30", "diffuse=0.5,0.25,1"};
+  o.select.cases = {"phong"};
+  o.select.variants = {"pixel"};
+  o.select.shapes = {"sphere"};
+  o.select.params = {"power=30", "diffuse=0.5,0.25,1"};
   auto report = run_suite(o);
   ASSERT_TRUE(report) << report.error().to_string();
   for (const CellResult& r : report->results) EXPECT_EQ(r.status, "pass") << r.language << " " << r.message;
@@ -91,8 +91,8 @@ TEST(EndToEnd, ParamOverrideReachesShadersAndReference) {
 
 TEST(EndToEnd, PlantedReflectionSignBugFailsEveryCell) {
   RunOptions o;
-  o.cases_dir = (kSource / "tests" / "mutants" / "cases").string();
-  o.cases = {"phong_reflect_sign"};
+  o.select.cases_dir = (kSource / "tests" / "mutants" / "cases").string();
+  o.select.cases = {"phong_reflect_sign"};
   auto report = run_suite(o);
   ASSERT_TRUE(report) << report.error().to_string();
   ASSERT_FALSE(report->results.empty());

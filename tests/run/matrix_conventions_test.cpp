@@ -27,12 +27,12 @@ using test::kRealWorld;
 
 RunOptions small_run(const std::string& cases_dir, std::vector<std::string> cases, const std::string& out = "") {
   RunOptions o;
-  o.cases_dir = cases_dir;
-  o.cases = std::move(cases);
-  o.size = 48;
-  o.shapes = {"cube", "torus"};
-  o.out_dir = out;
-  o.timing = {.warmup = 0, .runs = 0};
+  o.select.cases_dir = cases_dir;
+  o.select.cases = std::move(cases);
+  o.cell.size = 48;
+  o.select.shapes = {"cube", "torus"};
+  o.cell.out_dir = out;
+  o.cell.timing = {.warmup = 0, .runs = 0};
   return o;
 }
 

@@ -199,10 +199,10 @@ class MutantCase : public ::testing::TestWithParam<Mutant> {};
 TEST_P(MutantCase, IsCaughtAndAttributed) {
   const Mutant& m = GetParam();
   RunOptions o;
-  o.cases_dir = kMutantCases.string();
-  o.cases = {m.name};
-  o.shapes = m.shapes;
-  o.size = kSize;
+  o.select.cases_dir = kMutantCases.string();
+  o.select.cases = {m.name};
+  o.select.shapes = m.shapes;
+  o.cell.size = kSize;
   auto report = run_suite(o);
   ASSERT_TRUE(report) << report.error().to_string();
   ASSERT_FALSE(report->results.empty());
@@ -296,11 +296,11 @@ TEST(MutantCorpus, LibraryShadersTheMutantsDeriveFromPass) {
   ASSERT_FALSE(runs.empty());
   for (const auto& [case_variant, shapes] : runs) {
     RunOptions o;
-    o.cases_dir = (kSource / "shaders" / "cases").string();
-    o.cases = {case_variant.first};
-    o.variants = {case_variant.second};
-    o.shapes.assign(shapes.begin(), shapes.end());
-    o.size = kSize;
+    o.select.cases_dir = (kSource / "shaders" / "cases").string();
+    o.select.cases = {case_variant.first};
+    o.select.variants = {case_variant.second};
+    o.select.shapes.assign(shapes.begin(), shapes.end());
+    o.cell.size = kSize;
     auto report = run_suite(o);
     ASSERT_TRUE(report) << case_variant.first << "/" << case_variant.second << ": " << report.error().to_string();
     EXPECT_EQ(report->results.size(), shapes.size() * 10) << "HLSL, GLSL and Cg on every backend and path";

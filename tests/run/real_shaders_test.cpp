@@ -19,10 +19,10 @@ using test::kRealWorld;
 
 TEST(RealShaders, OneFileWithNamedEntryPointsPassesOnEveryHlslPath) {
   RunOptions o;
-  o.cases_dir = (kRealWorld / "cases").string();
-  o.cases = {"hlsl_lambert_two_entries"};
-  o.size = 64;
-  o.timing = {.warmup = 0, .runs = 0};
+  o.select.cases_dir = (kRealWorld / "cases").string();
+  o.select.cases = {"hlsl_lambert_two_entries"};
+  o.cell.size = 64;
+  o.cell.timing = {.warmup = 0, .runs = 0};
   auto report = run_suite(o);
   ASSERT_TRUE(report) << report.error().to_string();
   const std::set<std::string> paths = test::paths_all_with_status(*report, "pass");
@@ -45,10 +45,10 @@ Result<RunReport> run_edited_case(const std::vector<std::pair<std::string, std::
   }
   std::ofstream(root / "cases" / "hlsl_lambert_two_entries.toml") << text;
   RunOptions o;
-  o.cases_dir = (root / "cases").string();
-  o.size = 32;
-  o.shapes = {"sphere"};
-  o.timing = {.warmup = 0, .runs = 0};
+  o.select.cases_dir = (root / "cases").string();
+  o.cell.size = 32;
+  o.select.shapes = {"sphere"};
+  o.cell.timing = {.warmup = 0, .runs = 0};
   auto report = run_suite(o);
   fs::remove_all(root);
   return report;

@@ -44,10 +44,10 @@ TEST(RealWorldCorpus, ExpectationsNameExactlyThePlantedBugCases) {
 
 TEST(RealWorldCorpus, CorrectPortsPassAndPlantedBugsFailOnEveryPath) {
   RunOptions o;
-  o.cases_dir = (kRealWorld / "cases").string();
+  o.select.cases_dir = (kRealWorld / "cases").string();
   o.expectations = (kRealWorld / "planted_bugs.toml").string();
-  o.size = 48;
-  o.timing = {.warmup = 0, .runs = 0};
+  o.cell.size = 48;
+  o.cell.timing = {.warmup = 0, .runs = 0};
   auto report = run_suite(o);
   ASSERT_TRUE(report) << report.error().to_string();
   EXPECT_TRUE(report->acceptable());

@@ -66,7 +66,7 @@ TEST(RealWorldFx, TheOtherTechniqueIsPickedByTheCase) {
   replace("specular = [0.3, 0.3, 0.3]\npower = 12.0\n", "");
   dir.write("cases/diffuse.toml", text);
   RunOptions o = quick(dir / "cases", "diffuse");
-  o.backends = {"vulkan"};
+  o.select.backends = {"vulkan"};
   auto report = run_suite(o);
   ASSERT_TRUE(report) << report.error().to_string();
   ASSERT_EQ(report->results.size(), 2u);
@@ -74,7 +74,7 @@ TEST(RealWorldFx, TheOtherTechniqueIsPickedByTheCase) {
 
   replace("technique = \"RenderSceneDiffuseOnly\"", "technique = \"Shiny\"");
   dir.write("cases/missing.toml", text);
-  o.cases = {"missing"};
+  o.select.cases = {"missing"};
   report = run_suite(o);
   ASSERT_TRUE(report) << report.error().to_string();
   ASSERT_FALSE(report->results.empty());

@@ -23,11 +23,11 @@ using test::kRealWorld;
 
 Result<RunReport> run_cases(std::vector<std::string> cases) {
   RunOptions o;
-  o.cases_dir = (kRealWorld / "cases").string();
-  o.cases = std::move(cases);
-  o.size = 48;
-  o.shapes = {"sphere", "torus"};
-  o.timing = {.warmup = 0, .runs = 0};
+  o.select.cases_dir = (kRealWorld / "cases").string();
+  o.select.cases = std::move(cases);
+  o.cell.size = 48;
+  o.select.shapes = {"sphere", "torus"};
+  o.cell.timing = {.warmup = 0, .runs = 0};
   return run_suite(o);
 }
 
@@ -75,10 +75,10 @@ interior = { max_abs = 1e-5, reason = "fp32" }
 silhouette = { max_abs = 1e-4, reason = "edges" }
 )";
   RunOptions o;
-  o.cases_dir = (root / "cases").string();
-  o.size = 32;
-  o.shapes = {"sphere"};
-  o.timing = {.warmup = 0, .runs = 0};
+  o.select.cases_dir = (root / "cases").string();
+  o.cell.size = 32;
+  o.select.shapes = {"sphere"};
+  o.cell.timing = {.warmup = 0, .runs = 0};
   auto report = run_suite(o);
   fs::remove_all(root);
   ASSERT_TRUE(report) << report.error().to_string();

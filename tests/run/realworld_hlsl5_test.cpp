@@ -87,8 +87,8 @@ class CaseTree {
   std::string first_error(const std::string& textures) const {
     write_case(textures);
     RunOptions o = quick_32(cases(), "t");
-    o.backends = {"vulkan"};
-    o.shapes = {"sphere"};
+    o.select.backends = {"vulkan"};
+    o.select.shapes = {"sphere"};
     auto report = run_suite(o);
     if (!report) return "run failed: " + report.error().to_string();
     if (report->results.empty()) return "no cells";
@@ -176,7 +176,7 @@ TEST(RealWorldHlsl5, SamplerStateSettingsReachEveryPath) {
   const auto render = [&](const std::string& textures) {
     tree.write_case(textures);
     RunOptions o = quick_32(tree.cases(), "t");
-    o.shapes = {"sphere"};
+    o.select.shapes = {"sphere"};
     return run_suite(o);
   };
   auto nearest = render("[textures]\nshaderTexture = { file = \"hlsl5/two.png\" }\nSampleType = { filter = \"nearest\" }\n");

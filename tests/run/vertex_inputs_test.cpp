@@ -74,11 +74,11 @@ TEST(VertexInputs, AMapToAWordThatIsNoStreamSaysSo) {
 
 RunOptions small_vertex_run(const std::string& cases_dir) {
   RunOptions o;
-  o.cases_dir = cases_dir;
-  o.cases = {"glsl_lambert_packed_normal"};
-  o.size = 48;
-  o.shapes = {"sphere", "cone"};
-  o.timing = {.warmup = 0, .runs = 0};
+  o.select.cases_dir = cases_dir;
+  o.select.cases = {"glsl_lambert_packed_normal"};
+  o.cell.size = 48;
+  o.select.shapes = {"sphere", "cone"};
+  o.cell.timing = {.warmup = 0, .runs = 0};
   return o;
 }
 
@@ -104,7 +104,7 @@ TEST(VertexInputs, WithoutTheMapTheUnmatchedInputIsNamedOnEveryPath) {
   for (const char* folder : {"glsl", "hlsl"}) fs::create_directory_symlink(kRealWorld / folder, dir.path() / folder);
   dir.write("cases/glsl_lambert_packed_normal.toml", text);
   RunOptions o = small_vertex_run((dir.path() / "cases").string());
-  o.languages = {"glsl"};
+  o.select.languages = {"glsl"};
   auto report = run_suite(o);
   ASSERT_TRUE(report) << report.error().to_string();
   ASSERT_EQ(report->results.size(), 8u);

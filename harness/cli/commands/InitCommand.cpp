@@ -52,10 +52,10 @@ std::vector<std::string> distinct_errors(const RunReport& report) {
 // Runs the new case once, small; prints its summary. The problems it found, for the list.
 std::vector<std::string> check_run(const std::string& case_path, int size) {
   RunOptions options;
-  options.cases = {case_path};
-  options.size = size;
-  options.timing = {.warmup = 0, .runs = 0};
-  options.worker_binary = this_executable().string();   // the user's shaders: a crash costs cells, not the command
+  options.select.cases = {case_path};
+  options.cell.size = size;
+  options.cell.timing = {.warmup = 0, .runs = 0};
+  options.workers.worker_binary = this_executable().string();   // the user's shaders: a crash costs cells, not the command
   ConsoleProgress progress(stderr, isatty(STDERR_FILENO), false);
   options.on_cell = [&](size_t done, size_t total, const CellResult& cell) { progress.update(done, total, cell); };
   auto report = run_suite(options);

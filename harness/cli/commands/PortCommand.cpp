@@ -53,16 +53,16 @@ Command add_port_command(CLI::App& app) {
   cmd->add_option("--out-dir", args->out_dir, "Folder for the port and its case; default: <case stem>.port.<target>/ "
                                               "next to the case file");
   cmd->add_flag("--force", args->force, "Overwrite files a previous port wrote");
-  cmd->add_option("--backend", args->run.backends, "Backends: vulkan, gl; default: both")->delimiter(',');
-  cmd->add_option("--shape", args->run.shapes, "Shapes: sphere, cube, cone, torus; default: all")->delimiter(',');
-  cmd->add_option("--size", args->run.size, "Image width and height in pixels")->capture_default_str();
-  cmd->add_option("--out", args->run.out_dir, "Folder for renders, references and error images (EXR + PNG)");
+  cmd->add_option("--backend", args->run.select.backends, "Backends: vulkan, gl; default: both")->delimiter(',');
+  cmd->add_option("--shape", args->run.select.shapes, "Shapes: sphere, cube, cone, torus; default: all")->delimiter(',');
+  cmd->add_option("--size", args->run.cell.size, "Image width and height in pixels")->capture_default_str();
+  cmd->add_option("--out", args->run.cell.out_dir, "Folder for renders, references and error images (EXR + PNG)");
   args->outputs.add_options(cmd);
   add_console_flags(cmd, args->console);
-  cmd->add_option("--jobs,-j", args->run.jobs, "Worker threads; 0 = one per core")
+  cmd->add_option("--jobs,-j", args->run.workers.jobs, "Worker threads; 0 = one per core")
       ->capture_default_str()
       ->check(CLI::Range(0, 256));
-  args->run.timing.runs = 0;   // a port is judged on its images: draw once, untimed
+  args->run.cell.timing.runs = 0;   // a port is judged on its images: draw once, untimed
 
   return {cmd, [args] {
             const auto bad_input = [](const Error& e) {
@@ -72,8 +72,8 @@ Command add_port_command(CLI::App& app) {
             auto target = parse_port_target(args->to);
             if (!target) return bad_input(target.error());
             if (!args->outputs.load_charts() || !args->outputs.check_writable()) return kExitBadInput;
-            if (!args->run.out_dir.empty())
-              if (auto ok = check_writable_folder(args->run.out_dir, "--out"); !ok) return bad_input(ok.error());
+            if (!args->run.cell.out_dir.empty())
+              if (auto ok = check_writable_folder(args->run.cell.out_dir, "--out"); !ok) return bad_input(ok.error());
             auto plan = plan_port({.case_path = args->file, .from = args->from, .target = *target, .out_dir = args->out_dir});
             if (!plan) return bad_input(plan.error());
             if (!args->force)
@@ -95,17 +95,17 @@ Command add_port_command(CLI::App& app) {
             std::fflush(stdout);
 
             RunOptions options = args->run;
-            options.cases_dir = plan->out_dir;
-            options.cases = plan->case_paths;
-            options.worker_binary = this_executable().string();   // isolated, as `run`
+            options.select.cases_dir = plan->out_dir;
+            options.select.cases = plan->case_paths;
+            options.workers.worker_binary = this_executable().string();   // isolated, as `run`
             ConsoleProgress progress(stderr, isatty(STDERR_FILENO), args->console.view == ConsoleView::quiet);
             options.on_cell = [&](size_t done, size_t total, const CellResult& cell) { progress.update(done, total, cell); };
             auto report = run_suite(options);
             if (!report) return bad_input(report.error());
             print_console_report(*report, stdout, args->console);
             if (!args->outputs.write(*report)) return kExitFail;
-            if (!options.out_dir.empty())
-              fmt::print("images: {}/<case>/<variant>/<shape>/\n", std::filesystem::absolute(options.out_dir).string());
+            if (!options.cell.out_dir.empty())
+              fmt::print("images: {}/<case>/<variant>/<shape>/\n", std::filesystem::absolute(options.cell.out_dir).string());
             return report->acceptable() ? 0 : kExitFail;
           }};
 }

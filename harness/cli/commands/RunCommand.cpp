@@ -30,57 +30,57 @@ Command add_run_command(CLI::App& app) {
   auto args = std::make_shared<RunArguments>();
   RunOptions& run = args->options;
   CLI::App* cmd = app.add_subcommand("run", "Render the suite's cells and compare them with the reference");
-  cmd->add_option("--case", run.cases,
+  cmd->add_option("--case", run.select.cases,
                   "Case names (NAME.toml in --cases-dir) or case files (any path ending in .toml, e.g. a case "
                   "written next to your own shader); default: every case in --cases-dir")
       ->delimiter(',');
-  cmd->add_option("--variant", run.variants, "Variants: vertex, pixel, pixel_lut; default: all")->delimiter(',');
-  cmd->add_option("--backend", run.backends, "Backends: vulkan, gl; default: both")->delimiter(',');
-  cmd->add_option("--lang", run.languages, "Languages: hlsl, glsl, cg; default: every language a case has")
+  cmd->add_option("--variant", run.select.variants, "Variants: vertex, pixel, pixel_lut; default: all")->delimiter(',');
+  cmd->add_option("--backend", run.select.backends, "Backends: vulkan, gl; default: both")->delimiter(',');
+  cmd->add_option("--lang", run.select.languages, "Languages: hlsl, glsl, cg; default: every language a case has")
       ->delimiter(',');
-  cmd->add_option("--shape", run.shapes, "Shapes: sphere, cube, cone, torus; default: all")->delimiter(',');
-  cmd->add_option("--param", run.params,
+  cmd->add_option("--shape", run.select.shapes, "Shapes: sphere, cube, cone, torus; default: all")->delimiter(',');
+  cmd->add_option("--param", run.select.params,
                   "Override a case parameter: name=value or name=v1,v2,v3 (repeatable), e.g. --param power=20");
-  cmd->add_option("--size", run.size, "Image width and height in pixels")->capture_default_str();
-  cmd->add_option("--out", run.out_dir, "Folder for renders, references and error images (EXR + PNG)");
-  cmd->add_option("--save-images", run.save_images_dir,
+  cmd->add_option("--size", run.cell.size, "Image width and height in pixels")->capture_default_str();
+  cmd->add_option("--out", run.cell.out_dir, "Folder for renders, references and error images (EXR + PNG)");
+  cmd->add_option("--save-images", run.cell.save_images_dir,
                   "Keep every drawn cell's render, exact (EXR: RGBA + coverage), with DIR/manifest.json (case, "
                   "variant, language, backend, path, shape, size, scene, toolchain, SPIR-V hashes), for later runs "
                   "to be judged against with --against");
-  cmd->add_option("--against", run.against_dir,
+  cmd->add_option("--against", run.cell.against_dir,
                   "Judge every cell against its own image stored in DIR by an earlier --save-images run (today's "
                   "port against yesterday's known-good run, lavapipe against real hardware) instead of its model "
                   "or original; a different image size is refused, a different toolchain is reported");
   args->outputs.add_options(cmd);
-  cmd->add_option("--shard", run.shard,
+  cmd->add_option("--shard", run.select.shard,
                   "Run shard I of N (e.g. 2/4): case x variant x shape groups are dealt round-robin, so shards "
                   "merged with 'shaderbed merge' equal one whole run");
   cmd->add_option("--expectations", run.expectations,
                   "TOML file of known failures ([[known]] cells = \"case/variant/lang/backend/path/shape\", "
                   "reason = \"...\"; * matches anything): they are reported as known and do not fail the run");
-  cmd->add_option("--cases-dir", run.cases_dir, "Folder of case files")->default_str(default_cases_dir());
+  cmd->add_option("--cases-dir", run.select.cases_dir, "Folder of case files")->default_str(default_cases_dir());
   add_console_flags(cmd, args->console);
-  cmd->add_option("--repeat", run.timing.runs,
+  cmd->add_option("--repeat", run.cell.timing.runs,
                   "Timed repeats of every draw (after --warmup untimed ones); 0 = draw once, untimed")
       ->capture_default_str()
       ->check(CLI::Range(0, 1000));
-  cmd->add_option("--warmup", run.timing.warmup, "Untimed repeats before the timed ones")
+  cmd->add_option("--warmup", run.cell.timing.warmup, "Untimed repeats before the timed ones")
       ->capture_default_str()
       ->check(CLI::Range(0, 100));
   cmd->add_flag("--no-isolation", args->in_process,
                  "Compile and draw in this process instead of supervised worker processes (faster to debug; a "
                  "compiler crash or a runaway draw then ends the run)");
-  cmd->add_option("--draw-timeout", run.draw_timeout_s,
+  cmd->add_option("--draw-timeout", run.workers.draw_timeout_s,
                   "Seconds one cell's draw may take (pipeline build, warm-up and timed repeats) before its worker is "
                   "killed: the cell is 'error: timeout' and a fresh worker goes on")
       ->capture_default_str()
       ->check(CLI::Range(0.1, 86400.0));
-  cmd->add_option("--compile-timeout", run.compile_timeout_s,
+  cmd->add_option("--compile-timeout", run.workers.compile_timeout_s,
                   "Seconds compiling one program's shaders may take before its worker is killed (its cells are "
                   "errors)")
       ->capture_default_str()
       ->check(CLI::Range(0.1, 86400.0));
-  cmd->add_option("--jobs,-j", run.jobs,
+  cmd->add_option("--jobs,-j", run.workers.jobs,
                   "Worker threads, each with its own Vulkan device and GL context; 0 = one per core. Timings are "
                   "steadiest with --jobs 1")
       ->capture_default_str()
@@ -88,8 +88,8 @@ Command add_run_command(CLI::App& app) {
 
   return {cmd, [args] {
             if (!args->outputs.load_charts() || !args->outputs.check_writable()) return kExitBadInput;
-            for (const auto& [folder, option] : {std::pair{args->options.out_dir, "--out"},
-                                                  std::pair{args->options.save_images_dir, "--save-images"}})
+            for (const auto& [folder, option] : {std::pair{args->options.cell.out_dir, "--out"},
+                                                  std::pair{args->options.cell.save_images_dir, "--save-images"}})
               if (!folder.empty())
                 if (auto ok = check_writable_folder(folder, option); !ok) {
                   fmt::print(stderr, "shaderbed: {}\n", ok.error().to_string());
@@ -97,7 +97,7 @@ Command add_run_command(CLI::App& app) {
                 }
             ConsoleProgress progress(stderr, isatty(STDERR_FILENO), args->console.view == ConsoleView::quiet);
             RunOptions options = args->options;
-            if (!args->in_process) options.worker_binary = this_executable().string();
+            if (!args->in_process) options.workers.worker_binary = this_executable().string();
             options.on_cell = [&](size_t done, size_t total, const CellResult& cell) {
               progress.update(done, total, cell);
             };
@@ -108,12 +108,12 @@ Command add_run_command(CLI::App& app) {
             }
             print_console_report(*report, stdout, args->console);
             if (!args->outputs.write(*report)) return kExitFail;
-            if (!options.out_dir.empty())
-              fmt::print("images: {}/<case>/<variant>/<shape>/\n", std::filesystem::absolute(options.out_dir).string());
-            if (!options.save_images_dir.empty())
+            if (!options.cell.out_dir.empty())
+              fmt::print("images: {}/<case>/<variant>/<shape>/\n", std::filesystem::absolute(options.cell.out_dir).string());
+            if (!options.cell.save_images_dir.empty())
               fmt::print("stored images: {} (judge later runs with --against {})\n",
-                         (std::filesystem::absolute(options.save_images_dir) / "manifest.json").string(),
-                         options.save_images_dir);
+                         (std::filesystem::absolute(options.cell.save_images_dir) / "manifest.json").string(),
+                         options.cell.save_images_dir);
             // Interrupted: the cells it had are written above, marked incomplete.
             if (report->interruption) return 128 + report->interruption->signal;
             return report->acceptable() ? 0 : kExitFail;

@@ -1,4 +1,4 @@
-#include "run/LutScale.h"
+#include "run/LutDomain.h"
 
 #include <algorithm>
 #include <cmath>
