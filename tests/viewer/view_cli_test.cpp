@@ -116,6 +116,39 @@ TEST(View, ScreenshotIsTheRunsRenderOnGl) { expect_screenshot_is_the_runs_render
 // An SH case: the shape with its transfer texture and light uniforms (harness/prt).
 TEST(View, AnShCaseIsTheRunsRender) { expect_screenshot_is_the_runs_render("glsl", "vulkan", "spirv", "sh", "texture"); }
 
+// One draw path (run/CellDraw.h): a user's DX9 effect with a file texture, an attribute map
+// (its normals and UVs on TEXCOORD5 and TEXCOORD2) and pass states (back faces culled, no
+// depth test, so a draw without them shows the far side) draws alike under every command:
+// `view` shows run's pixels, and every `hard` row of it draws and passes.
+TEST(View, AUserEffectDrawsAlikeUnderRunViewAndHard) {
+  TempDir dir("one_draw");
+  const std::string cases = "--cases-dir " + (kSource / "tests" / "viewer" / "one_draw" / "cases").string() +
+                            " --case textured_lambert";
+  const nlohmann::json results = run_cells(dir, cases + " --shape sphere --lang hlsl --backend vulkan");
+  const std::string cell = "textured_lambert/pixel/hlsl/vulkan/spirv/sphere";
+  EXPECT_EQ(cell_of(results, cell).value("status", ""), "pass") << cell_of(results, cell).dump();
+  std::pair<int, std::string> viewed;
+  {
+    XvfbStartLock lock;
+    viewed = run_shell("xvfb-run -a " + kBinary + " view " + cases + " --shape sphere --lang hlsl --backend vulkan" +
+                       " --size " + std::to_string(kSize) + " --screenshot " + (dir / "view.png") + " --frames 2");
+  }
+  ASSERT_EQ(viewed.first, 0) << viewed.second;
+  const ImagePixels view = read_exr(dir / "view.exr");
+  const ImagePixels run = read_exr(dir / "run/textured_lambert/pixel/sphere/hlsl-vulkan-spirv.exr");
+  EXPECT_GT(drawn_pixels(run), 1000u);
+  EXPECT_EQ(differing_pixels(view, run), 0u) << "view draws the effect as run does";
+
+  const auto [status, hard] = run_shell(kBinary + " hard " + cases + " --size 33 --json " + (dir / "hard.json"));
+  EXPECT_EQ(status, 0) << hard;
+  std::ifstream in(dir / "hard.json");
+  const nlohmann::json report = nlohmann::json::parse(in, nullptr, false);
+  ASSERT_TRUE(report.contains("rows")) << hard;
+  EXPECT_FALSE(report["rows"].empty());
+  for (const nlohmann::json& row : report["rows"])
+    EXPECT_EQ(row.value("status", ""), "pass") << row.dump();
+}
+
 TEST(View, KeysChangeShapeVariantAndWireframe) {
   TempDir dir("view_keys");
   const nlohmann::json results =
