@@ -14,7 +14,7 @@
 
 namespace shaderbed::bench {
 
-// The engine's speed goals (issue 14), printed beside what was measured.
+// The engine's speed goals (docs/timing.md), printed beside what was measured.
 struct ProcessGoals {
   static constexpr double warm_suite_of_cold = 0.25;   // warm suite wall / cold suite wall
   static constexpr double warm_suite_ms = 2500;        // the default suite, warm, 2 cores

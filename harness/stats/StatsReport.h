@@ -1,7 +1,7 @@
 #pragma once
 // The result of `shaderbed stats`: one entry per case x variant x language x stage, with
 // SPIR-V counts as compiled, after spirv-opt -O and -Os, and the SPIRV-Cross GLSL size.
-// JSON layout (issue 5): {"tool": {...}, "entries": [{"case", "variant", "language",
+// JSON layout: {"tool": {...}, "entries": [{"case", "variant", "language",
 // "stage", "spirv": {...}, "spirv_opt": {...}, "spirv_os": {...}, "glsl_lines", "nir",
 // "book"}]}. Each counts object also carries "extended_calls" ({"Pow": 1, ...}).
 #include <cstdio>
@@ -53,7 +53,7 @@ std::string to_csv(const StatsReport&);
 std::string format_table(const StatsReport&);
 
 // The book's quoted instruction count for a case/variant/stage, if it gives one
-// (../shared/book/lights-and-brdfs.md §3.26). Not the same instruction set: for orientation.
+// (its §3.26). Not the same instruction set: for orientation.
 std::optional<int> book_count(const std::string& case_name, const std::string& variant, const std::string& stage);
 
 }  // namespace shaderbed::stats

@@ -2,7 +2,7 @@
 // Nothing a shader does takes the viewer down: before the viewer compiles a program in
 // its own process, a child process (`shaderbed __view-compile`, kept warm across reloads
 // like `run`'s workers) compiles it first. glslang 12 still dereferences null on some
-// valid-looking HLSL and Cg (DESIGN.md); when it does, the child dies, the viewer says
+// valid-looking HLSL and Cg (tests/run/isolation_test.cpp); when it does, the child dies, the viewer says
 // "compiler crashed" and keeps the last good image, and the next compile starts a new
 // child. When the child succeeds, its SPIR-V is in the disk compile cache, so the
 // viewer's own compile does not start glslang at all (with the cache off it compiles text

@@ -2,7 +2,7 @@
 // The viewer's keys: one table, from which the key handling looks actions up and from
 // which `h` and `shaderbed view --help` print, so what is printed is what is bound.
 //
-// The book's three test beds disagree (book/sh-radiosity-frameworks.md §7.1-§7.3): the
+// The book's three test beds disagree (its §7.1-§7.3): the
 // Cg and GLSL frameworks bind y/Y wireframe, g/G fixed-function light or shader, s/S
 // scale, >/< shape, q/Q quit; the DirectX framework binds V/P next vertex/pixel shader, M
 // next mesh, W/S zoom, A/D spin. They collide on S (scale up, or zoom out): s/S keep the

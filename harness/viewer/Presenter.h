@@ -1,7 +1,7 @@
 #pragma once
 // How the viewer's window puts its 8-bit image on screen: through the window's own GL
 // context (viewer/GlPresenter.h) for the GL backend's frames, through a Vulkan swapchain
-// (viewer/VulkanPresenter.h) for the Vulkan backend's, as issue 15 asks. Both show the
+// (viewer/VulkanPresenter.h) for the Vulkan backend's: each backend's frames through its own API. Both show the
 // same bytes at the same place: the image scaled to fit inside a frame (black, red while
 // the image is not the current state's), centred, each image pixel a whole number of
 // window pixels when it fits at 1:1 or more; and both read back what they present.

@@ -78,7 +78,7 @@ void main() {
 TEST(Isolation, ACompilerCrashIsAnErrorCellAndTheRunGoesOn) {
   shaderbed::test::TempDir dir("isolation");
   // A Cg entry parameter without a name crashes glslang 12 through the Cg dialect layer
-  // (issue 13: 6 of 3400 mutation-fuzzing runs of the library's Cg shaders).
+  // (6 of 3400 mutation-fuzzing runs of the library's Cg shaders).
   const std::string the_case = write_case(dir, "cg", R"(// Lambert's vertex stage (book §5.5) in Cg.
 float4 main(float4 p : POSITION, uniform float4x4 Transform) : POSITION { return mul(Transform, p); }
 )",
@@ -112,7 +112,7 @@ float4 main(float3 : TEXCOORD0) : COLOR { return float4(1, 1, 1, 1); }
 // binding table with it, still pass (nothing compiles the port in their name).
 TEST(Isolation, ACrashingVariantDoesNotTakeItsLanguagesOtherVariantsDown) {
   shaderbed::test::TempDir dir("isolation");
-  // glslang 12 dereferences null on an HLSL entry parameter without a name (DESIGN.md).
+  // glslang 12 dereferences null on an HLSL entry parameter without a name (checked on glslang 12.0).
   const std::string the_case = write_case(dir, "hlsl", R"(// Lambert's vertex stage (book §5.5).
 float4x4 Transform;
 float4 main(float4 p : POSITION) : POSITION { return mul(Transform, p); }

@@ -263,7 +263,7 @@ TEST_P(MutantCase, IsCaughtAndAttributed) {
   if (verdicts.size() == 1 && verdicts.begin()->first.empty()) {
     ADD_FAILURE() << "ATTRIBUTION MISSING: " << m.name << ": the runner left CellResult::attribution empty on all "
                   << caught << " failing cells; expected \"" << m.attribution << "\" (" << m.reason
-                  << "). Attribution is issue 4's comparison item and is not in the runner yet.";
+                  << ") (compare/Attribution.h).";
   } else {
     for (const auto& [verdict, cells] : verdicts)
       if (verdict != m.attribution) {

@@ -33,7 +33,7 @@ TEST(Expectations, PatternsMatchWholeSegments) {
 }
 
 TEST(Expectations, ManyStarsInOneSegmentMatchWithoutBacktrackingBlowUp) {
-  // The recursive matcher needed > 30 s for this one failing cell (issue 13).
+  // The recursive matcher needed > 30 s for this one failing cell.
   std::string stars;
   for (int i = 0; i < 40; ++i) stars += "*a";
   const std::string pattern = stars + "b/*/*/*/*/*";

@@ -1,5 +1,5 @@
 // A case file is read strictly: a typo, a wrong type, a NaN or a name that would leave
-// the output folder is an error at its line, never silently ignored (issue 13).
+// the output folder is an error at its line, never silently ignored.
 #include <string>
 
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // The viewer's keys as pure functions of the state, without a window: the book's test-bed
-// keys (book/sh-radiosity-frameworks.md §7), how their collisions are resolved, the
+// keys (the book's §7), how their collisions are resolved, the
 // parameter keys, the light under the mouse, and the scene a state draws.
 #include <fstream>
 #include <set>

@@ -365,7 +365,7 @@ TEST(View, AShaderThatCrashesTheCompilerDoesNotTakeTheViewerDown) {
   ASSERT_TRUE(viewer.has_window()) << viewer.errors();
   const std::string first = viewer.screenshot();
   ASSERT_FALSE(first.empty()) << viewer.errors();
-  // glslang 12 dereferences null on an HLSL entry parameter without a name (DESIGN.md).
+  // glslang 12 dereferences null on an HLSL entry parameter without a name (tests/run/isolation_test.cpp).
   std::ofstream(shader, std::ios::trunc) << "// A pixel stage with an unnamed parameter (crashes glslang 12).\n"
                                             "float4 main(int) : COLOR0 { return 1; }\n";
   ASSERT_TRUE(viewer.wait_for_errors("compiler crashed: signal 11 (SIGSEGV)")) << viewer.errors();

@@ -58,7 +58,7 @@ TEST(VulkanFileTexture, Sm5TextureAndSamplerStateAreSeparateDescriptors) {
   EXPECT_EQ(find("probeSampler")->paired, std::vector<std::string>{"probeTexture"});
 }
 
-// SPIRV-Cross needs the pair combined for GLSL (issue 10's "Cannot find mapping for
+// SPIRV-Cross needs the pair combined for GLSL (otherwise "Cannot find mapping for
 // combined sampler"): the Vulkan-target SPIR-V with its separate image and sampler
 // cross-compiles to one sampler2D.
 TEST(VulkanFileTexture, SpirvCrossCombinesTheSm5Pair) {
