@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <mutex>
 #include <numbers>
 
 #include "sh/Basis.h"
@@ -134,11 +136,22 @@ class SkyShLight final : public ShLight {
   // sun_table_[k] = ∫_disc u(ω)² max(0, n·ω) dω for n at cos(angle to the axis) = -1 + 2k/K:
   // Gauss-Legendre in cos of the angle from the axis times a periodic rule in azimuth,
   // which the clamp's kink (only where the disc straddles n's horizon) limits to ~1e-6.
+  // It depends on the sun's radius alone, so a process tabulates it once (~1 s) for every
+  // shape, light rotation and group.
   void tabulate_sun() {
+    static std::mutex mutex;
+    static std::map<double, std::vector<double>> tables;   // by sun radius
+    const std::lock_guard lock(mutex);
+    auto [table, added] = tables.try_emplace(sky_.sun_radius);
+    if (added) table->second = sun_table(sky_.sun_radius);
+    sun_table_ = table->second;
+  }
+
+  static std::vector<double> sun_table(double sun_radius) {
     constexpr int entries = 4097, rings = 48, azimuths = 256;
-    const double rim = std::cos(sky_.sun_radius);
+    const double rim = std::cos(sun_radius);
     const sh::GaussLegendre rule = sh::gauss_legendre(rings);
-    sun_table_.assign(entries, 0.0);
+    std::vector<double> table(entries, 0.0);
     for (int k = 0; k < entries; ++k) {
       const double c = -1.0 + 2.0 * k / (entries - 1), sn = std::sqrt(std::max(0.0, 1.0 - c * c));
       double sum = 0;
@@ -153,8 +166,9 @@ class SkyShLight final : public ShLight {
         }
         sum += w_mu * u * u * ring * (2.0 * std::numbers::pi / azimuths);
       }
-      sun_table_[size_t(k)] = sum;
+      table[size_t(k)] = sum;
     }
+    return table;
   }
 
   sh::SkyLight sky_;
