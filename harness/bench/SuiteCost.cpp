@@ -23,11 +23,13 @@ SuiteCost suite_cost(const RunReport& report) {
   CostPart readback{"readback", "readback", CostOwner::driver};
   CostPart compile{"compile", "compile: glslang, SPIRV-Tools, SPIRV-Cross", CostOwner::shaderbed};
   CostPart reference{"reference", "CPU reference render (double)", CostOwner::shaderbed};
+  CostPart precompute{"precompute", "SH precompute: transfer, light, tables", CostOwner::shaderbed};
   CostPart compare{"compare", "compare with the reference", CostOwner::shaderbed};
   CostPart io{"io", "image I/O: renders and error images (--out)", CostOwner::shaderbed};
 
   // The first cell of a program / group carries the time the others copy.
   std::set<std::tuple<std::string, std::string, std::string>> programs, groups;
+  std::set<std::pair<std::string, std::string>> shapes;   // an SH case's precompute serves all its variants
   SuiteCost cost;
   for (const CellResult& r : report.results) {
     ++cost.cells;
@@ -40,6 +42,10 @@ SuiteCost suite_cost(const RunReport& report) {
       reference.ms += time_of(r, "reference");
       ++reference.count;
     }
+    if (r.sh && shapes.insert({r.case_name, r.shape}).second) {
+      precompute.ms += r.sh->precompute_ms;
+      ++precompute.count;
+    }
     if (r.time_ms.contains("build") && !r.program_cached) {
       build.ms += time_of(r, "build");
       ++build.count;
@@ -50,7 +56,7 @@ SuiteCost suite_cost(const RunReport& report) {
         ++per_cell->count;
       }
   }
-  cost.parts = {build, draw, readback, compile, reference, compare, io};
+  cost.parts = {build, draw, readback, compile, reference, precompute, compare, io};
   for (const CostPart& p : cost.parts) (p.owner == CostOwner::driver ? cost.driver_ms : cost.shaderbed_ms) += p.ms;
   cost.summed_ms = cost.driver_ms + cost.shaderbed_ms;
   cost.wall_ms = report.wall_ms;

@@ -65,6 +65,18 @@ TEST(SuiteCost, ReferenceCountedOncePerGroup) {
   EXPECT_EQ(count(cost, "reference"), 2u);
 }
 
+TEST(SuiteCost, ShPrecomputeCountedOncePerCaseAndShape) {
+  RunReport report = two_programs_two_groups();
+  for (CellResult& r : report.results) {
+    r.sh = CellResult::ShErrors{};
+    r.sh->precompute_ms = r.shape == "sphere" ? 40 : 60;   // every cell of a shape copies its shape's
+  }
+  const SuiteCost cost = suite_cost(with_workers(report, 1));
+  EXPECT_DOUBLE_EQ(part(cost, "precompute"), 40 + 60);
+  EXPECT_EQ(count(cost, "precompute"), 2u);
+  EXPECT_DOUBLE_EQ(part(suite_cost(with_workers(two_programs_two_groups(), 1)), "precompute"), 0) << "no SH case";
+}
+
 TEST(SuiteCost, CachedPipelinesAreNotBuilds) {
   const SuiteCost cost = suite_cost(with_workers(two_programs_two_groups(), 1));
   EXPECT_DOUBLE_EQ(part(cost, "build"), 4 * 3);
