@@ -68,7 +68,7 @@ Result<SuiteProcess> suite_process(const std::string& state, std::vector<std::st
   if (!timed) return std::unexpected(timed.error());
   auto report = read_json(json.string());
   if (!report) return std::unexpected(report.error());
-  return SuiteProcess{state, timed->wall_ms, timed->exit.cpu_ms, suite_cost(*report), report->tools, report->count("fail")};
+  return SuiteProcess{state, timed->wall_ms, timed->exit.cpu_ms, suite_cost(*report), report->tools, report->count(CellStatus::fail)};
 }
 
 // `runs` starts of one command; `fresh_cache` gives each its own empty cache folder.

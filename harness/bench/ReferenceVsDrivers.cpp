@@ -101,7 +101,7 @@ Result<ReferenceVsDrivers> time_reference_against_drivers(const ComparedCell& ce
 
   ReferenceVsDrivers out{cell, o.size, *reference, o.runs, {}};
   for (const CellResult& r : report->results) {
-    if (r.status == "error")
+    if (r.status == CellStatus::error)
       return fail("bench", fmt::format("{} could not be drawn: {}", r.id(), r.message));
     DriverDraw d{r.backend, r.path, r.language, r.backend == "vulkan" ? "lavapipe" : "llvmpipe", r.gpu.wall, 0};
     if (d.wall.median > 0) d.reference_ratio = reference->median / d.wall.median;

@@ -33,7 +33,7 @@ SuiteCost suite_cost(const RunReport& report) {
   SuiteCost cost;
   for (const CellResult& r : report.results) {
     ++cost.cells;
-    cost.errors += r.status == "error";
+    cost.errors += r.status == CellStatus::error;
     if (r.time_ms.contains("compile") && programs.insert({r.case_name, r.variant, r.language}).second) {
       compile.ms += time_of(r, "compile");
       ++compile.count;

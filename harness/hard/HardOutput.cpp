@@ -41,19 +41,19 @@ std::string console_report(const HardReport& report) {
       current = r.case_name;
       out += fmt::format("\n{}\n{}", current, header);
     }
-    if (r.status == "error") {
+    if (r.status == CellStatus::error) {
       out += fmt::format("  {:<22} {:<13} {:<7} {:<5} {:<13} error: {}\n", r.scenario, r.variant, r.kind, r.language,
                          r.backend + "/" + r.path, r.message);
       continue;
     }
     out += fmt::format("  {:<22} {:<13} {:<7} {:<5} {:<13} {:>8} {:>8} {:>11.3g} {:>12}  {}{}\n", r.scenario,
                        r.variant, r.kind, r.language, r.backend + "/" + r.path, r.error.render_nonfinite, r.error.reference_nonfinite,
-                       r.error.max_relative, ulps_text(r.error), r.status,
+                       r.error.max_relative, ulps_text(r.error), to_string(r.status),
                        r.message.empty() ? "" : " (" + r.message + ")");
   }
   if (!current.empty()) summary(current);
   size_t failed = 0, errors = 0;
-  for (const HardRow& r : report.rows) (r.status == "error" ? errors : failed) += r.status != "pass";
+  for (const HardRow& r : report.rows) (r.status == CellStatus::error ? errors : failed) += r.status != CellStatus::pass;
   out += fmt::format("\n{} rows, {} failed, {} errors, {:.1f} s (relative floor {:g}, tolerance {:g}; error not measured "
                      "within {:g} of N.L = 0, N.V = 0, L = -V)\n",
                      report.rows.size(), failed, errors, report.wall_ms / 1000, kRelativeErrorFloor,
@@ -75,7 +75,7 @@ nlohmann::json json_report(const HardReport& report) {
     const NumericalError& e = r.error;
     const int width = r.width;
     j["rows"].push_back({{"case", r.case_name}, {"scenario", r.scenario}, {"variant", r.variant}, {"kind", r.kind},
-                         {"language", r.language}, {"backend", r.backend}, {"path", r.path}, {"status", r.status},
+                         {"language", r.language}, {"backend", r.backend}, {"path", r.path}, {"status", to_string(r.status)},
                          {"message", r.message}, {"pixels", e.pixels}, {"measured_pixels", e.measured_pixels},
                          {"nan", e.render_nan}, {"inf", e.render_inf}, {"nonfinite", e.render_nonfinite},
                          {"reference_nonfinite", e.reference_nonfinite}, {"nonfinite_mismatch", e.nonfinite_mismatch},

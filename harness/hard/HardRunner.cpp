@@ -231,7 +231,7 @@ class HardRunner {
                         .backend = b.name, .path = to_string(path)};
             auto ok = render_row(c, *v, language, b, path, slice ? &*slice : nullptr, *mesh, values, ref, dir, row);
             if (!ok) {
-              row.status = "error";
+              row.status = CellStatus::error;
               row.message = ok.error().to_string();
             }
             report.rows.push_back(std::move(row));
@@ -269,12 +269,12 @@ class HardRunner {
     row.error = numerical_error(rendered->image, reference.rgba, reference.judgement);
     const bool finite_ok = row.error.nonfinite_mismatch == 0;
     const bool error_ok = row.error.max_relative <= kRelativeTolerance;
-    row.status = finite_ok && error_ok ? "pass" : "fail";
+    row.status = finite_ok && error_ok ? CellStatus::pass : CellStatus::fail;
     if (!finite_ok) row.message = fmt::format("{} pixels NaN/Inf on one side only", row.error.nonfinite_mismatch);
     if (!error_ok)
       row.message += fmt::format("{}max relative error {:.3g} > {:g}", row.message.empty() ? "" : "; ",
                                  row.error.max_relative, kRelativeTolerance);
-    if (slice && !slice->row_values.empty() && row.status == "fail")
+    if (slice && !slice->row_values.empty() && row.status == CellStatus::fail)
       if (auto onset = first_failing_row(*slice, rendered->image, reference))
         row.message += fmt::format(", from {} = {:.3g} on", slice->spec.row_param, *onset);
     if (!dir.empty()) {
@@ -317,7 +317,7 @@ void summarise(HardReport& report) {
     rel = std::max(rel, r.error.max_relative);
     uint64_t& ulps = robust ? s.robust_max_ulps : s.book_max_ulps;
     ulps = std::max(ulps, r.error.max_ulps);
-    if (r.status != "pass") ++(robust ? s.robust_failed : s.book_failed);
+    if (r.status != CellStatus::pass) ++(robust ? s.robust_failed : s.book_failed);
   }
   for (const std::string& name : order) report.summaries.push_back(by_case.at(name));
 }

@@ -21,6 +21,7 @@
 #include "compare/NumericalError.h"
 #include "core/Error.h"
 #include "core/Image.h"
+#include "report/Results.h"
 
 namespace shaderbed::hard {
 
@@ -42,7 +43,7 @@ struct HardOptions {
 struct HardRow {
   std::string case_name, scenario, variant, kind;   // kind: "book" or "robust"
   std::string language, backend, path;
-  std::string status;                               // "pass", "fail", "error"
+  CellStatus status = CellStatus::error;            // pass, fail or error
   std::string message;
   int width = 0;                                    // of the image, for pixel coordinates
   NumericalError error;

@@ -28,7 +28,7 @@ void print_images(const CellResult& r, std::FILE* out) {
 
 size_t known_failures(const RunReport& report) {
   size_t n = 0;
-  for (const CellResult& r : report.results) n += r.status == "fail" && r.known_failure;
+  for (const CellResult& r : report.results) n += r.status == CellStatus::fail && r.known_failure;
   return n;
 }
 
@@ -62,7 +62,7 @@ bool print_problems(const RunReport& report, std::FILE* out, bool blank_line_fir
       body(r);
     }
   };
-  section("failures", [](const CellResult& r) { return r.status == "fail" && !r.known_failure; },
+  section("failures", [](const CellResult& r) { return r.status == CellStatus::fail && !r.known_failure; },
           [&](const CellResult& r) {
             fmt::print(out, "  {}: {}\n", where(r), r.message.empty() ? "failed" : first_line(r.message));
             fmt::print(out, "      attribution: {}{}\n", r.attribution.empty() ? "none" : r.attribution,
@@ -76,18 +76,18 @@ bool print_problems(const RunReport& report, std::FILE* out, bool blank_line_fir
             if (!r.reference_note.empty()) fmt::print(out, "      reference: {}\n", r.reference_note);
             print_images(r, out);
           });
-  section("errors", [](const CellResult& r) { return r.status == "error"; },
+  section("errors", [](const CellResult& r) { return r.status == CellStatus::error; },
           [&](const CellResult& r) { fmt::print(out, "  {}: {}\n", where(r), r.message); });
-  section("known", [](const CellResult& r) { return r.status == "fail" && r.known_failure; },
+  section("known", [](const CellResult& r) { return r.status == CellStatus::fail && r.known_failure; },
           [&](const CellResult& r) {
             fmt::print(out, "  {}: {}\n", where(r), r.message.empty() ? "failed" : first_line(r.message));
             fmt::print(out, "      known: {}\n", r.known_reason.empty() ? "(no reason given)" : r.known_reason);
             if (!r.attribution.empty()) fmt::print(out, "      attribution: {}\n", r.attribution);
           });
-  section("skipped (the path does not apply to the shader)", [](const CellResult& r) { return r.status == "skipped"; },
+  section("skipped (the path does not apply to the shader)", [](const CellResult& r) { return r.status == CellStatus::skipped; },
           [&](const CellResult& r) { fmt::print(out, "  {}: {}\n", where(r), r.message); });
   section("known failures that passed (remove them from the expectations)",
-          [](const CellResult& r) { return r.status == "pass" && r.known_failure; },
+          [](const CellResult& r) { return r.status == CellStatus::pass && r.known_failure; },
           [&](const CellResult& r) { fmt::print(out, "  {}: {}\n", where(r), r.known_reason); });
   print_warnings(report, out, printed || blank_line_first) && (printed = true);
   return printed;
@@ -95,12 +95,12 @@ bool print_problems(const RunReport& report, std::FILE* out, bool blank_line_fir
 
 void print_totals(const RunReport& report, std::FILE* out) {
   const size_t known = known_failures(report);
-  const size_t skipped = report.count("skipped");
+  const size_t skipped = report.count(CellStatus::skipped);
   if (report.interruption)
     fmt::print(out, "INCOMPLETE: {}; the cells below are those it finished\n", report.interruption->reason);
   fmt::print(out, "{}{} cells: {} passed, {} failed, {} known, {} errors{} in {:.1f} s\n",
-             report.interruption ? "INCOMPLETE: " : report.acceptable() ? "" : "FAIL: ", report.results.size(), report.count("pass"),
-             report.count("fail") - known, known, report.count("error"),
+             report.interruption ? "INCOMPLETE: " : report.acceptable() ? "" : "FAIL: ", report.results.size(), report.count(CellStatus::pass),
+             report.count(CellStatus::fail) - known, known, report.count(CellStatus::error),
              skipped ? fmt::format(", {} skipped", skipped) : "", report.wall_ms / 1000.0);
 }
 

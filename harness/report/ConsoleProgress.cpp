@@ -11,7 +11,7 @@ ConsoleProgress::ConsoleProgress(std::FILE* out, bool terminal, bool quiet)
 
 void ConsoleProgress::update(size_t done, size_t total, const CellResult& cell) {
   // Counted before the expectations are applied, so known failures are in it too.
-  not_passing_ += cell.status != "pass" && cell.status != "skipped";
+  not_passing_ += cell.status != CellStatus::pass && cell.status != CellStatus::skipped;
   const Clock::time_point now = Clock::now();
   const double elapsed = std::chrono::duration<double>(now - start_).count();
   const double eta = done ? elapsed / double(done) * double(total - done) : 0;

@@ -12,9 +12,9 @@ namespace shaderbed {
 namespace {
 
 std::string verdict(const CellResult& r) {
-  if (r.status == "pass") return "pass";
-  if (r.status == "fail") return r.known_failure ? "known" : "FAIL";
-  if (r.status == "skipped") return "skip";
+  if (r.status == CellStatus::pass) return "pass";
+  if (r.status == CellStatus::fail) return r.known_failure ? "known" : "FAIL";
+  if (r.status == CellStatus::skipped) return "skip";
   return "ERROR";
 }
 
@@ -34,7 +34,7 @@ void print_table(const RunReport& report, std::FILE* out, const TableOptions& op
     for (const char* h : {"draw ms (wall, median [CI])", "driver clock ms", "build ms"}) headers.push_back(h);
   std::vector<std::vector<std::string>> rows;
   for (const CellResult& r : report.results) {
-    const bool measured = r.status == "pass" || r.status == "fail";
+    const bool measured = r.status == CellStatus::pass || r.status == CellStatus::fail;
     rows.push_back({r.case_name, r.variant, r.language, r.backend, r.path, r.shape,
                     measured ? sci(r.metrics.max_abs) : "-", measured ? sci(r.metrics.min_passing_interior) : "-",
                     measured ? sci(r.metrics.rmse) : "-", verdict(r)});

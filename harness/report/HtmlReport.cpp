@@ -41,8 +41,8 @@ std::string db(double v) { return std::isfinite(v) ? fmt::format("{:.1f}", v) : 
 
 // "pass", "fail" (new), "known", "error", "skipped".
 std::string kind(const CellResult& r) {
-  if (r.status == "fail") return r.known_failure ? "known" : "fail";
-  return r.status == "pass" || r.status == "error" || r.status == "skipped" ? r.status : "error";
+  if (r.status == CellStatus::fail) return r.known_failure ? "known" : "fail";
+  return to_string(r.status);
 }
 
 std::string status_label(const std::string& k) {
@@ -159,7 +159,7 @@ class Writer {
     // 2. One passing example per case/variant.
     std::set<std::string> example;
     for (const CellResult& r : cells)
-      if (r.status == "pass" && example.insert(r.case_name + "/" + r.variant).second) own(r);
+      if (r.status == CellStatus::pass && example.insert(r.case_name + "/" + r.variant).second) own(r);
     // 3. The other renders of a failing cell's case/variant/shape (the attribution evidence).
     for (const CellResult& r : cells)
       if (kind(r) != "pass" && kind(r) != "skipped")
@@ -302,7 +302,7 @@ class Writer {
     auto row = [&](const std::string& key, const std::string& value) {
       h += fmt::format("<tr><th>{}</th><td>{}</td></tr>", key, value);
     };
-    if (r.status == "pass" || r.status == "fail") {
+    if (r.status == CellStatus::pass || r.status == CellStatus::fail) {
       row("interior", fmt::format("max {} &nbsp; threshold {} &nbsp; smallest passing {} &nbsp; rmse {} &nbsp; psnr {} dB",
                                   sci(m.max_abs), escape(tolerance_text(r.interior_threshold, r.interior_threshold_rel)),
                                   sci(m.min_passing_interior), sci(m.rmse), db(m.psnr)));
@@ -365,7 +365,7 @@ class Writer {
     const CellResult& r = report_.results[i];
     const CellMetrics& m = r.metrics;
     const std::string k = kind(r);
-    const bool measured = r.status == "pass" || r.status == "fail";
+    const bool measured = r.status == CellStatus::pass || r.status == CellStatus::fail;
     auto num = [&](double v, bool shown) {
       return shown ? fmt::format("<td class=\"n\" data-v=\"{}\">{}</td>", sort_value(v), sci(v)) : "<td class=\"n\" data-v=\"\">-</td>";
     };
@@ -506,7 +506,7 @@ class Writer {
     const ToolVersions& t = report_.tools;
     size_t known = 0;
     for (const CellResult& r : report_.results) known += kind(r) == "known";
-    const size_t fails = report_.count("fail") - known;
+    const size_t fails = report_.count(CellStatus::fail) - known;
     auto unknown = [](const std::string& s) { return s.empty() ? std::string("<i>unknown</i>") : escape(s); };
 
     std::string h;
@@ -515,17 +515,17 @@ class Writer {
          "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
          "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; img-src data: file: 'self'; "
          "style-src 'unsafe-inline'; script-src 'unsafe-inline'\">\n";
-    h += fmt::format("<title>shaderbed: {} passed, {} failed, {} known, {} errors</title>\n", report_.count("pass"), fails,
-                     known, report_.count("error"));
+    h += fmt::format("<title>shaderbed: {} passed, {} failed, {} known, {} errors</title>\n", report_.count(CellStatus::pass), fails,
+                     known, report_.count(CellStatus::error));
     h += "<style>\n" + std::string(kCss) + "</style>\n</head>\n";
     h += fmt::format("<body data-cells=\"{}\" data-images-ready=\"pending\">\n", report_.results.size());
     h += "<header><h1>shaderbed report</h1>\n<div class=\"totals\">";
     h += fmt::format("<span class=\"tot\"><b>{}</b> cells</span>", report_.results.size());
-    h += fmt::format("<span class=\"tot st pass\"><b>{}</b> passed</span>", report_.count("pass"));
+    h += fmt::format("<span class=\"tot st pass\"><b>{}</b> passed</span>", report_.count(CellStatus::pass));
     h += fmt::format("<span class=\"tot st fail\"><b>{}</b> failed</span>", fails);
     h += fmt::format("<span class=\"tot st known\"><b>{}</b> known failures</span>", known);
-    h += fmt::format("<span class=\"tot st error\"><b>{}</b> errors</span>", report_.count("error"));
-    if (const size_t skipped = report_.count("skipped"))
+    h += fmt::format("<span class=\"tot st error\"><b>{}</b> errors</span>", report_.count(CellStatus::error));
+    if (const size_t skipped = report_.count(CellStatus::skipped))
       h += fmt::format("<span class=\"tot st skipped\"><b>{}</b> skipped</span>", skipped);
     h += fmt::format("<span class=\"tot\">{:.1f} s</span>", report_.wall_ms / 1000.0);
     h += fmt::format("<span class=\"verdict {}\">{}</span>", report_.acceptable() ? "ok" : "bad",

@@ -35,7 +35,7 @@ ojson cell_json(const CellResult& r) {
                 {"backend", r.backend},
                 {"path", r.path},
                 {"shape", r.shape},
-                {"status", r.status},
+                {"status", to_string(r.status)},
                 {"message", r.message}};
   cell["attribution"] = {{"verdict", r.attribution}, {"reason", r.attribution_reason}};
   cell["known_failure"] = {{"known", r.known_failure}, {"reason", r.known_reason}};
@@ -201,10 +201,12 @@ CellResult read_cell(const json& c, const std::string& p) {
   read_required(c, "backend", p, r.backend);
   read_required(c, "path", p, r.path);
   read_required(c, "shape", p, r.shape);
-  read_required(c, "status", p, r.status);
-  if (r.status != "pass" && r.status != "fail" && r.status != "error" && r.status != "skipped")
-    throw BadField{child(p, "status"),
-                   "expected \"pass\", \"fail\", \"error\" or \"skipped\", found \"" + r.status + "\""};
+  std::string status;
+  read_required(c, "status", p, status);
+  const std::optional<CellStatus> parsed = parse_cell_status(status);
+  if (!parsed)
+    throw BadField{child(p, "status"), "expected \"pass\", \"fail\", \"error\" or \"skipped\", found \"" + status + "\""};
+  r.status = *parsed;
   read(c, "message", p, r.message);
   if (const json* a = object_at(c, "attribution", p)) {
     read(*a, "verdict", child(p, "attribution"), r.attribution);
@@ -422,13 +424,13 @@ ojson report_json(const RunReport& report) {
                     {"memory_hits", c.compile_memory_hits}}}};
   }
   size_t known = 0;
-  for (const CellResult& r : report.results) known += r.status == "fail" && r.known_failure;
+  for (const CellResult& r : report.results) known += r.status == CellStatus::fail && r.known_failure;
   j["totals"] = {{"cells", report.results.size()},
-                 {"pass", report.count("pass")},
-                 {"fail", report.count("fail") - known},
+                 {"pass", report.count(CellStatus::pass)},
+                 {"fail", report.count(CellStatus::fail) - known},
                  {"known", known},
-                 {"error", report.count("error")},
-                 {"skipped", report.count("skipped")}};
+                 {"error", report.count(CellStatus::error)},
+                 {"skipped", report.count(CellStatus::skipped)}};
   j["results"] = ojson::array();
   for (const CellResult& r : report.results) j["results"].push_back(cell_json(r));
   return j;

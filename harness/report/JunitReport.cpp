@@ -83,9 +83,9 @@ struct Counts {
   void add(const CellResult& r) {
     ++tests;
     seconds += cell_seconds(r);
-    if (r.status == "error") ++errors;
-    else if ((r.status == "fail" && r.known_failure) || r.status == "skipped") ++skipped;
-    else if (r.status != "pass") ++failures;
+    if (r.status == CellStatus::error) ++errors;
+    else if ((r.status == CellStatus::fail && r.known_failure) || r.status == CellStatus::skipped) ++skipped;
+    else if (r.status != CellStatus::pass) ++failures;
   }
   std::string attributes() const {
     return fmt::format("tests=\"{}\" failures=\"{}\" errors=\"{}\" skipped=\"{}\"", tests, failures, errors, skipped);
@@ -126,15 +126,15 @@ std::string to_junit(const RunReport& report) {
       x += fmt::format("    <testcase classname=\"{}\" name=\"{}\" time=\"{}\">\n",
                        escape(r.case_name + "." + r.variant + "." + r.language, true),
                        escape(r.backend + "/" + r.path + "/" + r.shape, true), seconds(cell_seconds(r)));
-      if (r.status == "error") {
+      if (r.status == CellStatus::error) {
         x += fmt::format("      <error type=\"error\" message=\"{}\">{}</error>\n", escape(first_line(r.message), true),
                          escape(r.message));
-      } else if (r.status == "skipped") {
+      } else if (r.status == CellStatus::skipped) {
         x += fmt::format("      <skipped message=\"{}\"/>\n", escape("does not apply: " + first_line(r.message), true));
-      } else if (r.status == "fail" && r.known_failure) {
+      } else if (r.status == CellStatus::fail && r.known_failure) {
         x += fmt::format("      <skipped message=\"{}\">{}</skipped>\n", escape("known: " + r.known_reason, true),
                          escape(details(r)));
-      } else if (r.status != "pass") {
+      } else if (r.status != CellStatus::pass) {
         std::string message = r.message.empty() ? "" : first_line(r.message) + "; ";
         if (const std::string best = best_explanation(r); !best.empty()) message += "explained: " + best + "; ";
         message += metric_summary(r) + "; " + attribution(r);

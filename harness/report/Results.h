@@ -6,6 +6,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace shaderbed {
@@ -85,6 +86,16 @@ struct Explanation {
 };
 
 // What a cell was judged against.
+// How a cell ended. Strings only at the edges: reports print to_string, readers parse.
+enum class CellStatus {
+  pass,
+  fail,
+  error,
+  skipped,   // the path does not apply; the message says why
+};
+const char* to_string(CellStatus);
+std::optional<CellStatus> parse_cell_status(std::string_view text);
+
 struct ReferenceSource {
   std::string kind;          // "model", "render" (the original on one backend/path) or "images" (a stored run)
   std::string label;         // "phong (per pixel)", "hlsl vulkan/spirv", "images in DIR"
@@ -94,7 +105,7 @@ struct ReferenceSource {
 
 struct CellResult {
   std::string case_name, variant, language, backend, path, shape;
-  std::string status;               // "pass", "fail", "error" or "skipped" (the path does not apply; message says why)
+  CellStatus status = CellStatus::error;
   std::string message;              // why it failed / the error line
   // Failures: which stage the evidence points at ("front end", "cross-compiler",
   // "driver", "model/reference", "unclear") and why; "" for passes.
@@ -192,7 +203,7 @@ struct RunReport {
   std::string out_dir;
   std::string shard;                // "I/N" when this is one shard of a run, else ""
 
-  size_t count(const std::string& status) const {
+  size_t count(CellStatus status) const {
     size_t n = 0;
     for (const CellResult& r : results) n += r.status == status;
     return n;
@@ -201,7 +212,7 @@ struct RunReport {
   bool acceptable() const {
     if (interruption) return false;
     for (const CellResult& r : results)
-      if (r.status != "pass" && r.status != "skipped" && !(r.status == "fail" && r.known_failure)) return false;
+      if (r.status != CellStatus::pass && r.status != CellStatus::skipped && !(r.status == CellStatus::fail && r.known_failure)) return false;
     return true;
   }
 };

@@ -64,12 +64,12 @@ SummaryMatrix build_summary_matrix(const RunReport& report) {
     });
     MatrixCell& cell = row.cells[size_t(column - m.columns.begin())];
     ++cell.total;
-    if (r.status == "pass") ++cell.passed;
-    else if (r.status == "fail") ++(r.known_failure ? cell.known : cell.failed);
-    else if (r.status == "skipped") ++cell.skipped;
+    if (r.status == CellStatus::pass) ++cell.passed;
+    else if (r.status == CellStatus::fail) ++(r.known_failure ? cell.known : cell.failed);
+    else if (r.status == CellStatus::skipped) ++cell.skipped;
     else ++cell.errors;
-    if (r.status != "pass" && r.status != "skipped") cell.problems.push_back(i);
-    if (r.status != "pass" && r.status != "fail") continue;   // an error drew nothing: no error to show
+    if (r.status != CellStatus::pass && r.status != CellStatus::skipped) cell.problems.push_back(i);
+    if (r.status != CellStatus::pass && r.status != CellStatus::fail) continue;   // an error drew nothing: no error to show
     const double e = r.metrics.max_abs, t = r.interior_threshold;
     // A relative tolerance has no single threshold: its share is measured per pixel.
     const double ratio = r.interior_threshold_rel > 0 ? r.metrics.tolerance_share

@@ -85,10 +85,10 @@ std::vector<std::string> apply_expectations(const std::vector<KnownFailure>& kno
   for (CellResult& r : report.results)
     for (const KnownFailure& k : known) {
       if (!matches(k.pattern, r.id())) continue;
-      if (r.status == "fail") {
+      if (r.status == CellStatus::fail) {
         r.known_failure = true;
         r.known_reason = k.reason;
-      } else if (r.status == "pass") {
+      } else if (r.status == CellStatus::pass) {
         now_passing.push_back(r.id());
       }
       break;

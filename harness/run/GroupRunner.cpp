@@ -131,10 +131,10 @@ struct GroupRunner::Impl final : GroupDrawer {
         Result<ReferenceImage> own = reference->cell_image(r);
         judged = own ? judge_cell(*image, *own, classify_pixels(*own), dir, true, r)
                      : Result<void>(std::unexpected(own.error()));
-        if (judged && r.status == "fail") own_references.emplace(results.size(), std::move(*own));
+        if (judged && r.status == CellStatus::fail) own_references.emplace(results.size(), std::move(*own));
       }
       if (!judged) {
-        r.status = judged.error().skipped ? "skipped" : "error";
+        r.status = judged.error().skipped ? CellStatus::skipped : CellStatus::error;
         r.message = judged.error().to_string();
       } else {
         if (r.reference.is_reference)
@@ -225,7 +225,7 @@ struct GroupRunner::Impl final : GroupDrawer {
   void explain(CellReference& reference, const CellGroup& g, const Mesh& mesh, std::vector<CellResult>& results,
                const std::vector<Image>& images, const std::vector<size_t>& rendered, const ReferenceImage* group_image,
                const std::map<size_t, ReferenceImage>& own_references) {
-    if (std::ranges::none_of(rendered, [&](size_t i) { return results[i].status == "fail"; })) return;
+    if (std::ranges::none_of(rendered, [&](size_t i) { return results[i].status == CellStatus::fail; })) return;
     const Case& c = *g.c;
     Evidence evidence;
     if (auto surface = render_surface_samples(mesh, scene_, c)) evidence.surface = std::move(*surface);
@@ -238,7 +238,7 @@ struct GroupRunner::Impl final : GroupDrawer {
     }
     for (size_t i = 0; i < rendered.size(); ++i) {
       CellResult& r = results[rendered[i]];
-      if (r.status != "fail") continue;
+      if (r.status != CellStatus::fail) continue;
       if (group_image) {
         explain_cell(images[i], *group_image, classes_, evidence, r);
       } else {
@@ -283,7 +283,7 @@ struct GroupRunner::Impl final : GroupDrawer {
     std::vector<RenderOutcome> outcomes;
     for (size_t i = 0; i < rendered.size(); ++i) {
       const CellResult& r = results[rendered[i]];
-      outcomes.push_back({r.language, r.backend, r.path, r.status == "pass", &images[i]});
+      outcomes.push_back({r.language, r.backend, r.path, r.status == CellStatus::pass, &images[i]});
     }
     const std::vector<Verdict> verdicts = attribute_failures(
         outcomes, reference, {t.interior, t.silhouette, t.interior_rel, t.silhouette_rel}, area_);
@@ -295,7 +295,7 @@ struct GroupRunner::Impl final : GroupDrawer {
       std::set<std::string> failing_languages, passing_languages;
       for (size_t i = 0; i < rendered.size(); ++i) {
         const CellResult& r = results[rendered[i]];
-        if (r.status == "fail") failing.push_back(&images[i]), failing_languages.insert(r.language);
+        if (r.status == CellStatus::fail) failing.push_back(&images[i]), failing_languages.insert(r.language);
         else passing_languages.insert(r.language);
       }
       // A language that also passes somewhere is a backend's or path's fault, not its source's.
@@ -312,7 +312,7 @@ struct GroupRunner::Impl final : GroupDrawer {
       CellResult& r = results[rendered[i]];
       const Verdict& v = verdicts[i];
       const bool geometry = v.attribution == Attribution::matrix_convention;
-      if (!port_reason.empty() && r.status == "fail" && !geometry) {
+      if (!port_reason.empty() && r.status == CellStatus::fail && !geometry) {
         r.attribution = "port";
         r.attribution_reason = port_reason;
       } else {
@@ -412,7 +412,7 @@ struct GroupRunner::Impl final : GroupDrawer {
                                           area_, &classes);
     r.time_ms["compare"] = ms_since(t0);
     r.metrics = cell_metrics(cmp);
-    r.status = cmp.pass ? "pass" : "fail";
+    r.status = cmp.pass ? CellStatus::pass : CellStatus::fail;
     r.message = cmp.reason;
 
     if (dir.empty()) return {};

@@ -375,7 +375,7 @@ class Supervisor {
   void settle(size_t g, const CellGroup& group, const PlannedCell& cell, const std::string& message) {
     CellResult r{.case_name = group.c->name, .variant = group.variant->name, .language = to_string(cell.language),
                  .backend = cell.backend->name, .path = to_string(cell.path), .shape = group.shape};
-    r.status = "error";
+    r.status = CellStatus::error;
     r.message = message;
     settled_[g].push_back(std::move(r));
   }

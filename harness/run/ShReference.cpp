@@ -75,8 +75,8 @@ class ShReference final : public CellReference {
     }
     if (c_.approximation) {
       e.bound = c_.approximation->max_abs;
-      if (e.truncation > e.bound && r.status == "pass") {
-        r.status = "fail";
+      if (e.truncation > e.bound && r.status == CellStatus::pass) {
+        r.status = CellStatus::fail;
         r.attribution = "model/reference";
         r.message = fmt::format("the SH approximation differs from the exact lighting integral by {:.3g} > {:.3g} "
                                 "([tolerance] approximation: {})",

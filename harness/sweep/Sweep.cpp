@@ -106,7 +106,7 @@ void mark_pareto_fronts(std::vector<SweepPoint>& points) {
     std::vector<CostError> measured;
     std::vector<size_t> index;   // measured[i] is points[index[i]]
     for (size_t i = 0; i < points.size(); ++i)
-      if (points[i].scene == scene && points[i].status != "error") {
+      if (points[i].scene == scene && points[i].status != CellStatus::error) {
         measured.push_back({points[i].time_ms, points[i].rmse});
         index.push_back(i);
       }
@@ -195,7 +195,7 @@ Result<SweepResult> run_sweep(const SweepOptions& o) {
       for (const auto& [name, value] : values) point_label.push_back(name + "=" + format_axis_value(value));
       point_label.push_back(step.precision);
       r.variant += fmt::format(" [{}]", fmt::join(point_label, " "));
-      if (r.status == "fail" && v.mode == LightingMode::per_vertex) {
+      if (r.status == CellStatus::fail && v.mode == LightingMode::per_vertex) {
         // Expected: the sweep judges it against the per-pixel model, not its own.
         r.known_failure = true;
         r.known_reason = "a per-vertex variant judged against the per-pixel model: its error is what shading at "

@@ -57,7 +57,8 @@ struct SweepPoint {
   // compression the axes trade), and what the approximation costs besides the draw.
   double precompute_ms = 0;
   double bytes_per_vertex = 0;
-  std::string status, message;
+  CellStatus status = CellStatus::error;
+  std::string message;
   bool pareto = false;                         // on its scene's speed/error Pareto front
 };
 

@@ -45,7 +45,7 @@ void print_sweep_table(const SweepResult& sweep, std::FILE* out) {
                     p.cell.at("backend"), p.cell.at("path"), p.cell.at("shape"), sci(p.rmse), sci(p.max_abs),
                     fmt::format("{:.3f} [{:.3f}, {:.3f}]", p.time_ms, p.time_low_ms, p.time_high_ms),
                     fmt::format("{:.3f}", p.driver_clock_ms), std::to_string(p.instructions), p.pareto ? "*" : "",
-                    p.status == "error" ? "ERROR" : p.status == "pass" ? "yes" : "no"});
+                    p.status == CellStatus::error ? "ERROR" : p.status == CellStatus::pass ? "yes" : "no"});
     if (sh) rows.back().insert(rows.back().end() - 2, {fmt::format("{:.1f}", p.precompute_ms), fmt::format("{:.0f}", p.bytes_per_vertex)});
   }
   std::vector<size_t> width(header_row.size());
@@ -61,7 +61,7 @@ void print_sweep_table(const SweepResult& sweep, std::FILE* out) {
   print_row(header_row);
   for (const auto& row : rows) print_row(row);
   for (const SweepPoint& p : sweep.points)
-    if (p.status == "error") fmt::print(out, "\nerror at {} {}: {}\n", axis_text(p), p.cell.at("variant"), p.message);
+    if (p.status == CellStatus::error) fmt::print(out, "\nerror at {} {}: {}\n", axis_text(p), p.cell.at("variant"), p.message);
   fmt::print(out,
              "\n{} points of {} at {}x{}; draw time = wall median of {} timed draws after {} warm-up (CI: the "
              "median's, order statistics); rmse and max err over interior pixels against {}; instr = SPIR-V instructions "
@@ -100,7 +100,7 @@ std::string sweep_json(const SweepResult& sweep, const std::vector<SceneChart>& 
                       {"bytes_per_vertex", json_number(p.bytes_per_vertex)},
                       {"instructions", p.instructions},
                       {"instructions_by_stage", {{"vertex", p.vertex_instructions}, {"fragment", p.fragment_instructions}}},
-                      {"status", p.status},
+                      {"status", to_string(p.status)},
                       {"message", p.message},
                       {"series", p.series},
                       {"label", p.label},
@@ -127,7 +127,7 @@ Result<void> write_sweep_json(const SweepResult& sweep, const std::vector<SceneC
 Result<std::vector<SceneChart>> write_sweep_charts(const SweepResult& sweep, const std::string& out_stem) {
   std::vector<std::string> scenes;
   for (const SweepPoint& p : sweep.points)
-    if (p.status != "error" && std::find(scenes.begin(), scenes.end(), p.scene) == scenes.end()) scenes.push_back(p.scene);
+    if (p.status != CellStatus::error && std::find(scenes.begin(), scenes.end(), p.scene) == scenes.end()) scenes.push_back(p.scene);
   if (scenes.empty()) return fail("sweep", "no point was drawn: nothing to chart");
   const auto& c = sweep.points.front().cell;
   const std::string cells = fmt::format("{}, {}, {}", c.at("language"), c.at("backend"), c.at("shape"));
@@ -135,7 +135,7 @@ Result<std::vector<SceneChart>> write_sweep_charts(const SweepResult& sweep, con
   for (size_t i = 0; i < scenes.size(); ++i) {
     std::vector<ChartPoint> points;
     for (const SweepPoint& p : sweep.points)
-      if (p.status != "error" && p.scene == scenes[i]) points.push_back({p.label, p.series, p.time_ms, p.rmse});
+      if (p.status != CellStatus::error && p.scene == scenes[i]) points.push_back({p.label, p.series, p.time_ms, p.rmse});
     const std::string scene = scenes[i].empty() ? "" : ", " + scenes[i];
     const ChartSpec spec{.title = fmt::format("{}{}: speed against error ({}, {}x{})", sweep.case_name, scene, cells,
                                               sweep.size, sweep.size),

@@ -11,7 +11,7 @@ namespace {
 CellResult cell(std::string case_name, std::string variant, std::string language, std::string backend,
                 std::string shape, double compile, double reference, double build, bool cached) {
   CellResult r{.case_name = std::move(case_name), .variant = std::move(variant), .language = std::move(language),
-               .backend = std::move(backend), .path = "spirv", .shape = std::move(shape), .status = "pass"};
+               .backend = std::move(backend), .path = "spirv", .shape = std::move(shape), .status = CellStatus::pass};
   r.time_ms = {{"compile", compile}, {"reference", reference}, {"build", build},
                {"draw", 2},          {"readback", 0.5},        {"compare", 0.25}};
   r.program_cached = cached;
@@ -118,7 +118,7 @@ TEST(SuiteCost, UnaccountedIsWallTimesWorkersMinusParts) {
 TEST(SuiteCost, CellThatCouldNotRunAddsOnlyWhatItMeasured) {
   RunReport report = two_programs_two_groups();
   CellResult broken{.case_name = "lambert", .variant = "pixel", .language = "glsl", .backend = "vulkan",
-                    .path = "spirv", .shape = "cube", .status = "error"};
+                    .path = "spirv", .shape = "cube", .status = CellStatus::error};
   broken.time_ms = {{"reference", 9}};   // the compile failed: no compile, build, draw, compare
   report.results.push_back(broken);
   const SuiteCost cost = suite_cost(with_workers(report, 1));

@@ -29,7 +29,7 @@ inline RunOptions quick_run(const std::string& cases_dir, const std::string& cas
 inline std::set<std::string> paths_all_with_status(const RunReport& report, const std::string& status) {
   std::set<std::string> paths;
   for (const CellResult& r : report.results) {
-    EXPECT_EQ(r.status, status) << r.id() << ": " << r.message;
+    EXPECT_EQ(to_string(r.status), status) << r.id() << ": " << r.message;
     paths.insert(r.backend + "/" + r.path);
   }
   return paths;

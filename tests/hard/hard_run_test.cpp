@@ -24,7 +24,7 @@ std::vector<const HardRow*> rows(const HardReport& r, const std::string& kind) {
 void expect_both_backends(const std::vector<const HardRow*>& rs) {
   for (const char* backend : {"vulkan", "gl"})
     EXPECT_TRUE(std::any_of(rs.begin(), rs.end(), [&](const HardRow* r) { return r->backend == backend; })) << backend;
-  for (const HardRow* r : rs) EXPECT_NE(r->status, "error") << r->message;
+  for (const HardRow* r : rs) EXPECT_NE(r->status, CellStatus::error) << r->message;
 }
 
 TEST(HardRun, BrokenShaderIsCaughtAndRobustOneIsClean) {
@@ -41,11 +41,11 @@ TEST(HardRun, BrokenShaderIsCaughtAndRobustOneIsClean) {
   for (const HardRow* r : book) {
     // The ungated 1/sqrt((N.L)(N.V)) is NaN on the unlit and back-facing pixels.
     EXPECT_GT(r->error.nonfinite_mismatch, 0u) << r->backend;
-    EXPECT_EQ(r->status, "fail") << r->backend;
+    EXPECT_EQ(r->status, CellStatus::fail) << r->backend;
   }
   for (const HardRow* r : robust) {
     EXPECT_EQ(r->error.render_nonfinite, 0u) << r->backend;
-    EXPECT_EQ(r->status, "pass") << r->backend << ": " << r->message;
+    EXPECT_EQ(r->status, CellStatus::pass) << r->backend << ": " << r->message;
   }
   ASSERT_EQ(report->summaries.size(), 1u);
   EXPECT_GT(report->summaries[0].book_nonfinite, report->summaries[0].robust_nonfinite);
@@ -59,7 +59,7 @@ TEST(HardRun, PointLightOnTheSurfaceHasOneUndefinedPixelAndRobustStaysFinite) {
   expect_both_backends(robust);
   for (const HardRow* r : robust) {
     EXPECT_EQ(r->error.render_nonfinite, 0u) << r->backend;
-    EXPECT_EQ(r->status, "pass") << r->backend << ": " << r->message;
+    EXPECT_EQ(r->status, CellStatus::pass) << r->backend << ": " << r->message;
   }
   for (const HardRow* r : book)
     if (r->variant == "pixel") {
@@ -77,7 +77,7 @@ TEST(HardRun, StableFormBeatsTheBookOnTheSharpestCookTorranceLobe) {
   for (const HardRow* r : book) book_worst = std::max(book_worst, r->error.max_relative);
   for (const HardRow* r : robust) {
     EXPECT_GT(r->error.measured_pixels, 0u);
-    EXPECT_EQ(r->status, "pass") << r->backend << ": " << r->message;
+    EXPECT_EQ(r->status, CellStatus::pass) << r->backend << ": " << r->message;
     EXPECT_LT(r->error.max_relative, book_worst) << r->backend;
   }
 }
@@ -100,11 +100,11 @@ TEST(HardRun, LobeMapFindsTheBookFormulaLosingThePeakOfSharpLobes) {
     if (r.variant == "pixel_robust") robust = &r;
   }
   ASSERT_TRUE(book && robust);
-  ASSERT_EQ(book->status == "error" || robust->status == "error", false) << book->message << robust->message;
+  ASSERT_EQ(book->status == CellStatus::error || robust->status == CellStatus::error, false) << book->message << robust->message;
   // The same map, drawn a row at a time with each row's slope: the book's N.H form is far
   // off near the peak of the sharp rows, the cross-product form is not.
-  EXPECT_EQ(book->status, "fail");
-  EXPECT_EQ(robust->status, "pass") << robust->message;
+  EXPECT_EQ(book->status, CellStatus::fail);
+  EXPECT_EQ(robust->status, CellStatus::pass) << robust->message;
   EXPECT_GT(book->error.max_relative, 100 * robust->error.max_relative);
 }
 

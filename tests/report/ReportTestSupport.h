@@ -149,7 +149,7 @@ inline RunReport sample_report(const fs::path& out, int size = 48) {
     r.backend = std::move(backend);
     r.path = std::move(path);
     r.shape = std::move(shape);
-    r.status = std::move(status);
+    r.status = *parse_cell_status(status);
     r.interior_threshold = 2e-3;
     r.silhouette_threshold = 2e-2;
     r.time_ms = {{"compile", 3.5}, {"reference", 12.25}, {"build", 1.5}, {"draw", 0.75}, {"readback", 0.25}, {"compare", 0.5}};
@@ -255,7 +255,7 @@ inline RunReport matrix_report() {
     r.backend = std::move(backend);
     r.path = std::move(path);
     r.shape = std::move(shape);
-    r.status = std::move(status);
+    r.status = *parse_cell_status(status);
     r.metrics.max_abs = r.metrics.min_passing_interior = max_abs;
     r.interior_threshold = 2e-3;
     return r;
@@ -306,7 +306,7 @@ inline RunReport many_cell_report(const fs::path& out, int cases, int size = 32)
           r.backend = col[1];
           r.path = col[2];
           r.shape = shape;
-          r.status = report.results.empty() ? "fail" : "pass";
+          r.status = report.results.empty() ? CellStatus::fail : CellStatus::pass;
           r.metrics.max_abs = report.results.empty() ? 0.25 : 1e-4;
           r.interior_threshold = 2e-3;
           const std::string stem = r.language + "-" + r.backend + "-" + r.path;

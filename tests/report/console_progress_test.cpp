@@ -15,7 +15,7 @@ std::string progress(size_t total, bool terminal, bool quiet, size_t failing = 0
   std::FILE* out = std::tmpfile();
   ConsoleProgress p(out, terminal, quiet);
   for (size_t done = 1; done <= total; ++done)
-    p.update(done, total, CellResult{.status = done <= failing ? "fail" : "pass"});
+    p.update(done, total, CellResult{.status = done <= failing ? CellStatus::fail : CellStatus::pass});
   std::string s(size_t(std::ftell(out)), '\0');
   std::rewind(out);
   s.resize(std::fread(s.data(), 1, s.size(), out));

@@ -23,7 +23,7 @@ std::string table_printed(const RunReport& report, const TableOptions& options) 
 RunReport timed_report() {
   RunReport report;
   CellResult built{.case_name = "phong", .variant = "pixel", .language = "glsl", .backend = "vulkan",
-                   .path = "spirv", .shape = "sphere", .status = "pass"};
+                   .path = "spirv", .shape = "sphere", .status = CellStatus::pass};
   built.time_ms["build"] = 61.5;
   built.gpu = {"timestamp queries", 1, 5, {0.75, 0.625, 2.5, 0.9375}, {0.875, 0.8125, 1.0625, 0.9375}};
   CellResult cached = built;

@@ -28,7 +28,7 @@ RunReport explained_failure() {
   r.backend = "vulkan";
   r.path = "spirv";
   r.shape = "sphere";
-  r.status = "fail";
+  r.status = CellStatus::fail;
   r.message = "666 interior pixels over 1e-05 + 0.000122|ref| (max 0.604)";
   r.attribution = "port";
   r.interior_threshold = 1e-5;

@@ -257,7 +257,7 @@ TEST(HtmlReport, ManyCellsEmbedFailuresAndExamplesAndLinkTheRest) {
   // Another passing cell's render and error map come from the run's files, by relative path.
   const size_t last = report.results.size() - 1;
   const CellResult& plain = report.results[last];
-  EXPECT_EQ(plain.status, "pass");
+  EXPECT_EQ(plain.status, CellStatus::pass);
   const std::string stem = plain.case_name + "/" + plain.variant + "/" + plain.shape + "/" + plain.language + "-" +
                            plain.backend + "-" + plain.path;
   EXPECT_NE(cards[last].find("data-file=\"" + stem + ".png\""), std::string::npos) << cards[last];

@@ -27,7 +27,7 @@ RunReport every_field() {
   r.backend = "gl";
   r.path = "cross";
   r.shape = "torus";
-  r.status = "fail";
+  r.status = CellStatus::fail;
   r.message = "interior max error 0.5 > 0.001\nsecond line \"quoted\" \\ tab\t";
   r.attribution = "cross-compiler";
   r.attribution_reason = "only the SPIRV-Cross path differs";
@@ -80,7 +80,7 @@ RunReport every_field() {
   e.backend = "vulkan";
   e.path = "spirv";
   e.shape = "cube";
-  e.status = "error";
+  e.status = CellStatus::error;
   e.message = "x.cg:3:1: compile: syntax error";
   report.results.push_back(e);
   return report;
@@ -150,7 +150,7 @@ TEST(JsonReport, RoundTripIsExact) {
   EXPECT_EQ(r.interior_threshold_rel, 0x1p-13);
   EXPECT_EQ(r.tolerance_reason, "differential default");
   EXPECT_EQ(r.metrics.tolerance_share, 4.5e3);
-  EXPECT_EQ(back->results[1].status, "error");
+  EXPECT_EQ(back->results[1].status, CellStatus::error);
   EXPECT_FALSE(back->acceptable());
   fs::remove_all(file.parent_path().parent_path());
 }

@@ -244,7 +244,7 @@ TEST(JunitReport, EscapesMarkupAndCleansBytes) {
   r.backend = "gl";
   r.path = "native";
   r.shape = "cube\"'";
-  r.status = "fail";
+  r.status = CellStatus::fail;
   r.message = "bad <tag> & \"q\" 'a'\x01\x1f\xc3\x28 \xe2\x82\xac end\nline two";
   r.attribution = "front end";
   report.results.push_back(r);

@@ -15,7 +15,7 @@ RunReport shard(const std::string& run_id, const std::string& which, const std::
   r.run_id = run_id;
   r.shard = which;
   CellResult cell{.case_name = "lambert", .variant = "pixel", .language = "glsl", .backend = "vulkan", .path = "spirv",
-                  .shape = shape, .status = "pass"};
+                  .shape = shape, .status = CellStatus::pass};
   r.results.push_back(cell);
   return r;
 }

@@ -26,7 +26,7 @@ RunReport report_with_a_skip() {
       r.backend = skipped ? "gl" : "vulkan";
       r.path = skipped ? "glsl" : "spirv";
       r.shape = shape;
-      r.status = skipped ? "skipped" : "pass";
+      r.status = skipped ? CellStatus::skipped : CellStatus::pass;
       if (skipped) r.message = kReason;
       report.results.push_back(r);
     }
@@ -65,7 +65,7 @@ TEST(SkippedCells, SummaryMatrixSaysSkipAndLeavesThemOutOfTheCount) {
     EXPECT_EQ(cell.text(), m.columns[c].backend == "gl" ? "skip" : "2/2");
     EXPECT_TRUE(cell.problems.empty());
   }
-  report.results[1].status = "pass";   // one of two shapes skipped: counted out of one
+  report.results[1].status = CellStatus::pass;   // one of two shapes skipped: counted out of one
   m = build_summary_matrix(report);
   const size_t gl = m.columns[0].backend == "gl" ? 0 : 1;
   EXPECT_EQ(m.rows[0].cells[gl].text(), "1/1");
@@ -76,7 +76,7 @@ TEST(SkippedCells, JsonKeepsThemAndTotalsCountThem) {
   EXPECT_NE(json.find("\"skipped\": 2"), std::string::npos) << json.substr(0, 600);
   auto back = parse_json(json, "skipped.json");
   ASSERT_TRUE(back) << back.error().to_string();
-  EXPECT_EQ(back->count("skipped"), 2u);
+  EXPECT_EQ(back->count(CellStatus::skipped), 2u);
   EXPECT_EQ(back->results[1].message, kReason);
 }
 

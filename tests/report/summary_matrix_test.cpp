@@ -25,7 +25,7 @@ TEST(SummaryMatrix, ColumnsOnlyWhereACellExistsInTheUsualOrder) {
   RunReport odd;
   for (const char* path : {"zeta", "cross", "alpha", "glsl"})
     odd.results.push_back({.case_name = "c", .variant = "v", .language = "glsl", .backend = "gl", .path = path, .shape = "s",
-                           .status = "pass"});
+                           .status = CellStatus::pass});
   EXPECT_EQ(labels(build_summary_matrix(odd)),
             (std::vector<std::string>{"glsl gl/glsl", "glsl gl/cross", "glsl gl/alpha", "glsl gl/zeta"}))
       << "unknown paths after the known ones, by name";
@@ -76,9 +76,9 @@ TEST(SummaryMatrix, WorstErrorPerRow) {
   EXPECT_TRUE(std::isnan(m.rows[2].worst_of_threshold));
   RunReport lut;
   lut.results = {{.case_name = "warn", .variant = "pixel_lut", .language = "glsl", .backend = "gl", .path = "glsl",
-                  .shape = "cube", .status = "pass", .metrics = {.max_abs = 0.03}, .interior_threshold = 0.1},
+                  .shape = "cube", .status = CellStatus::pass, .metrics = {.max_abs = 0.03}, .interior_threshold = 0.1},
                  {.case_name = "warn", .variant = "pixel_lut", .language = "glsl", .backend = "gl", .path = "glsl",
-                  .shape = "cone", .status = "pass", .metrics = {.max_abs = 0.01}, .interior_threshold = 0.0125}};
+                  .shape = "cone", .status = CellStatus::pass, .metrics = {.max_abs = 0.01}, .interior_threshold = 0.0125}};
   // Kept by value: a reference into the temporary's rows dangled (ASan, scripts/fuzz --ci).
   const SummaryMatrix lut_matrix = build_summary_matrix(lut);
   const MatrixRow& row = lut_matrix.rows.at(0);

@@ -32,7 +32,7 @@ TEST(EndToEnd, DefaultSuitePassesOnEveryBackendAndGlPath) {
   std::set<std::tuple<std::string, std::string, std::string>> language_backend_path;
   std::set<std::string> cases, shapes;
   for (const CellResult& r : report->results) {
-    EXPECT_EQ(r.status, "pass") << r.case_name << " " << r.variant << " " << r.language << " " << r.backend << "/"
+    EXPECT_EQ(r.status, CellStatus::pass) << r.case_name << " " << r.variant << " " << r.language << " " << r.backend << "/"
                                 << r.path << " " << r.shape << ": " << r.message;
     language_backend_path.insert({r.language, r.backend, r.path});
     cases.insert(r.case_name);
@@ -86,7 +86,7 @@ TEST(EndToEnd, ParamOverrideReachesShadersAndReference) {
   o.select.params = {"power=30", "diffuse=0.5,0.25,1"};
   auto report = run_suite(o);
   ASSERT_TRUE(report) << report.error().to_string();
-  for (const CellResult& r : report->results) EXPECT_EQ(r.status, "pass") << r.language << " " << r.message;
+  for (const CellResult& r : report->results) EXPECT_EQ(r.status, CellStatus::pass) << r.language << " " << r.message;
 }
 
 TEST(EndToEnd, PlantedReflectionSignBugFailsEveryCell) {
@@ -97,7 +97,7 @@ TEST(EndToEnd, PlantedReflectionSignBugFailsEveryCell) {
   ASSERT_TRUE(report) << report.error().to_string();
   ASSERT_FALSE(report->results.empty());
   for (const CellResult& r : report->results) {
-    EXPECT_EQ(r.status, "fail") << r.language << " " << r.backend << "/" << r.path << " " << r.shape;
+    EXPECT_EQ(r.status, CellStatus::fail) << r.language << " " << r.backend << "/" << r.path << " " << r.shape;
     EXPECT_GT(r.metrics.max_abs, 100 * r.interior_threshold) << "the misplaced highlight is no rounding error";
   }
 }

@@ -59,7 +59,7 @@ TEST(MatrixConventions, RowVectorTwinRendersTheSamePixelsOnEveryHlslPath) {
   ASSERT_TRUE(report) << report.error().to_string();
   std::map<std::string, std::vector<const CellResult*>> by_case;
   for (const CellResult& r : report->results) {
-    EXPECT_EQ(r.status, "pass") << r.id() << ": " << r.message << " / " << r.attribution_reason;
+    EXPECT_EQ(r.status, CellStatus::pass) << r.id() << ": " << r.message << " / " << r.attribution_reason;
     by_case[r.case_name].push_back(&r);
   }
   ASSERT_EQ(by_case["hlsl_lambert_two_entries"].size(), 6u);   // vulkan/spirv, gl/spirv, gl/cross x 2 shapes
@@ -95,7 +95,7 @@ TEST(MatrixConventions, ARowVectorShaderGivenTheColumnVectorMatrixIsBlamedOnTheC
   ASSERT_TRUE(report) << report.error().to_string();
   ASSERT_EQ(report->results.size(), 6u);
   for (const CellResult& r : report->results) {
-    EXPECT_EQ(r.status, "fail") << r.id();
+    EXPECT_EQ(r.status, CellStatus::fail) << r.id();
     EXPECT_EQ(r.attribution, "matrix convention") << r.id() << ": " << r.message << " / " << r.attribution_reason;
     EXPECT_NE(r.attribution_reason.find("row-vector shader (mul(v, M)) given a column-vector matrix"),
               std::string::npos)
@@ -109,7 +109,7 @@ TEST(MatrixConventions, SeparateRowVectorMatricesPointLightAmbientAndPaddingPass
   ASSERT_TRUE(report) << report.error().to_string();
   ASSERT_EQ(report->results.size(), 6u);
   for (const CellResult& r : report->results)
-    EXPECT_EQ(r.status, "pass") << r.id() << ": " << r.message << " / " << r.attribution_reason;
+    EXPECT_EQ(r.status, CellStatus::pass) << r.id() << ": " << r.message << " / " << r.attribution_reason;
 }
 
 TEST(MatrixConventions, WithoutThePointLightTheSameShaderFails) {
@@ -119,7 +119,7 @@ TEST(MatrixConventions, WithoutThePointLightTheSameShaderFails) {
   auto report = run_suite(small_run(cases, {}));
   ASSERT_TRUE(report) << report.error().to_string();
   ASSERT_FALSE(report->results.empty());
-  for (const CellResult& r : report->results) EXPECT_EQ(r.status, "fail") << r.id();
+  for (const CellResult& r : report->results) EXPECT_EQ(r.status, CellStatus::fail) << r.id();
 }
 
 TEST(MatrixConventions, APaddingLiteralOfTheWrongLengthNamesTheUniformAndTheLine) {
@@ -129,7 +129,7 @@ TEST(MatrixConventions, APaddingLiteralOfTheWrongLengthNamesTheUniformAndTheLine
   ASSERT_TRUE(report) << report.error().to_string();
   ASSERT_FALSE(report->results.empty());
   for (const CellResult& r : report->results) {
-    EXPECT_EQ(r.status, "error") << r.id();
+    EXPECT_EQ(r.status, CellStatus::error) << r.id();
     EXPECT_NE(r.message.find("uniform 'padding' (float) needs 1 value, the case gives 2"), std::string::npos)
         << r.message;
     EXPECT_NE(r.message.find("hlsl_lambert_point_ambient.toml:21"), std::string::npos) << r.message;

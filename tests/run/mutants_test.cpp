@@ -215,18 +215,18 @@ TEST_P(MutantCase, IsCaughtAndAttributed) {
     const std::string cell = cell_name(r);
     languages.insert(r.language);
     backends.insert(r.backend);
-    if (r.status == "error") {
+    if (r.status == CellStatus::error) {
       ADD_FAILURE() << m.name << " " << cell << " could not be drawn: " << r.message;
       continue;
     }
     if (!expected_to_fail(m, r)) {
       // The library's unbroken shaders in the same case: untouched by the mutant.
-      EXPECT_EQ(r.status, "pass") << m.name << " " << cell << ": this cell runs an unbroken shader (or a backend "
+      EXPECT_EQ(r.status, CellStatus::pass) << m.name << " " << cell << ": this cell runs an unbroken shader (or a backend "
                                   << "the mutant should not affect) and must pass: " << r.message;
       continue;
     }
     ++expected;
-    if (r.status != "fail") {
+    if (r.status != CellStatus::fail) {
       ADD_FAILURE() << "NOT CAUGHT: " << m.name << " (" << m.breaks << ") passes on " << cell << ", max error "
                     << r.metrics.max_abs << " against the tolerance " << r.interior_threshold;
       continue;
@@ -305,7 +305,7 @@ TEST(MutantCorpus, LibraryShadersTheMutantsDeriveFromPass) {
     ASSERT_TRUE(report) << case_variant.first << "/" << case_variant.second << ": " << report.error().to_string();
     EXPECT_EQ(report->results.size(), shapes.size() * 10) << "HLSL, GLSL and Cg on every backend and path";
     for (const CellResult& r : report->results)
-      EXPECT_EQ(r.status, "pass") << "library " << r.case_name << " " << cell_name(r) << " at " << kSize << "x" << kSize
+      EXPECT_EQ(r.status, CellStatus::pass) << "library " << r.case_name << " " << cell_name(r) << " at " << kSize << "x" << kSize
                                   << ": " << r.message;
   }
 }

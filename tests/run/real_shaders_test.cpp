@@ -59,7 +59,7 @@ TEST(RealShaders, EveryUnboundUniformIsListedInOneError) {
   ASSERT_TRUE(report) << report.error().to_string();
   ASSERT_FALSE(report->results.empty());
   for (const CellResult& r : report->results) {
-    EXPECT_EQ(r.status, "error") << r.id();
+    EXPECT_EQ(r.status, CellStatus::error) << r.id();
     EXPECT_NE(r.message.find("2 uniforms cannot be bound"), std::string::npos) << r.message;
     EXPECT_NE(r.message.find("'WorldViewProj'"), std::string::npos) << r.message;
     EXPECT_NE(r.message.find("'MaterialDiffuse'"), std::string::npos) << r.message;
@@ -72,7 +72,7 @@ TEST(RealShaders, AnEntryPointTheFileDoesNotHaveIsAnErrorNamingIt) {
   ASSERT_TRUE(report) << report.error().to_string();
   ASSERT_FALSE(report->results.empty());
   for (const CellResult& r : report->results) {
-    EXPECT_EQ(r.status, "error") << r.id();
+    EXPECT_EQ(r.status, CellStatus::error) << r.id();
     EXPECT_NE(r.message.find("LightPixelShder"), std::string::npos) << r.message;
     EXPECT_NE(r.message.find("lambert_two_entries.hlsl"), std::string::npos) << r.message;
   }

@@ -60,18 +60,18 @@ TEST(RealWorldCorpus, CorrectPortsPassAndPlantedBugsFailOnEveryPath) {
   for (const CellResult& r : report->results) {
     Counts& c = styles[style_of(r.case_name)];
     ++c.cells;
-    if (r.status == "pass") ++c.pass;
-    else if (r.status == "fail") ++c.fail;
-    else if (r.status == "skipped") ++c.skipped, ++c.skip_reasons[r.backend + "/" + r.path + ": " + r.message];
+    if (r.status == CellStatus::pass) ++c.pass;
+    else if (r.status == CellStatus::fail) ++c.fail;
+    else if (r.status == CellStatus::skipped) ++c.skipped, ++c.skip_reasons[r.backend + "/" + r.path + ": " + r.message];
     else ++c.error;
-    if (r.status == "skipped") {
+    if (r.status == CellStatus::skipped) {
       EXPECT_FALSE(r.message.empty()) << r.id();
     } else if (is_bug_case(r.case_name)) {
-      EXPECT_EQ(r.status, "fail") << r.id() << ": " << r.message;
+      EXPECT_EQ(r.status, CellStatus::fail) << r.id() << ": " << r.message;
       EXPECT_TRUE(r.known_failure) << r.id();
       EXPECT_FALSE(r.message.empty()) << r.id();
     } else {
-      EXPECT_EQ(r.status, "pass") << r.id() << ": " << r.message;
+      EXPECT_EQ(r.status, CellStatus::pass) << r.id() << ": " << r.message;
     }
   }
   for (const char* style : {"cg", "fx", "glsl110", "glsl330", "hlsl", "hlsl5"}) EXPECT_TRUE(styles.contains(style)) << style;

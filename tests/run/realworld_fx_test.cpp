@@ -37,7 +37,7 @@ TEST(RealWorldFx, HalfVectorBugFailsOnEveryPath) {
   ASSERT_TRUE(report) << report.error().to_string();
   ASSERT_EQ(report->results.size(), 6u);
   for (const CellResult& r : report->results) {
-    EXPECT_EQ(r.status, "fail") << r.id() << ": " << r.message;
+    EXPECT_EQ(r.status, CellStatus::fail) << r.id() << ": " << r.message;
     EXPECT_NE(r.message.find("interior pixels over"), std::string::npos) << r.message;
     // Only the specular term is wrong: at most the specular colour (0.3) off.
     EXPECT_GT(r.metrics.max_abs, 0.05) << r.id();
@@ -70,7 +70,7 @@ TEST(RealWorldFx, TheOtherTechniqueIsPickedByTheCase) {
   auto report = run_suite(o);
   ASSERT_TRUE(report) << report.error().to_string();
   ASSERT_EQ(report->results.size(), 2u);
-  for (const CellResult& r : report->results) EXPECT_EQ(r.status, "pass") << r.id() << ": " << r.message;
+  for (const CellResult& r : report->results) EXPECT_EQ(r.status, CellStatus::pass) << r.id() << ": " << r.message;
 
   replace("technique = \"RenderSceneDiffuseOnly\"", "technique = \"Shiny\"");
   dir.write("cases/missing.toml", text);
@@ -79,7 +79,7 @@ TEST(RealWorldFx, TheOtherTechniqueIsPickedByTheCase) {
   ASSERT_TRUE(report) << report.error().to_string();
   ASSERT_FALSE(report->results.empty());
   const CellResult& r = report->results.front();
-  EXPECT_EQ(r.status, "error");
+  EXPECT_EQ(r.status, CellStatus::error);
   EXPECT_NE(r.message.find("missing.toml:11"), std::string::npos) << r.message;
   EXPECT_NE(r.message.find("no technique 'Shiny'"), std::string::npos) << r.message;
   EXPECT_NE(r.message.find("RenderSceneBlinnPhong, RenderSceneDiffuseOnly"), std::string::npos) << r.message;

@@ -84,7 +84,7 @@ silhouette = { max_abs = 1e-4, reason = "edges" }
   ASSERT_TRUE(report) << report.error().to_string();
   ASSERT_FALSE(report->results.empty());
   for (const CellResult& r : report->results) {
-    EXPECT_EQ(r.status, "error") << r.id();
+    EXPECT_EQ(r.status, CellStatus::error) << r.id();
     for (const char* name : {"gl_LightSource[0].diffuse", "gl_LightSource[0].specular", "gl_FrontMaterial.shininess",
                              "gl_FrontMaterial.emission", "gl_LightModel.ambient"})
       EXPECT_NE(r.message.find(name), std::string::npos) << name << " in " << r.message;

@@ -33,7 +33,7 @@ TEST(RealWorldHlsl5, TutorialShaderPassesOnEveryHlslPath) {
   ASSERT_TRUE(report) << report.error().to_string();
   std::set<std::string> paths;
   for (const CellResult& r : report->results) {
-    EXPECT_EQ(r.status, "pass") << r.id() << ": " << r.message;
+    EXPECT_EQ(r.status, CellStatus::pass) << r.id() << ": " << r.message;
     // Every report says the reference did not see the image.
     EXPECT_NE(r.reference_note.find("the reference ignores textures"), std::string::npos) << r.reference_note;
     EXPECT_NE(r.reference_note.find("'shaderTexture'"), std::string::npos) << r.reference_note;
@@ -55,7 +55,7 @@ TEST(RealWorldHlsl5, SwizzledTexelBugFailsOnEveryPath) {
   ASSERT_TRUE(report) << report.error().to_string();
   ASSERT_EQ(report->results.size(), 6u);
   for (const CellResult& r : report->results) {
-    EXPECT_EQ(r.status, "fail") << r.id() << ": " << r.message;
+    EXPECT_EQ(r.status, CellStatus::fail) << r.id() << ": " << r.message;
     // Red and blue are off by 0.4 x N.L at most: the largest error is that of a swap.
     EXPECT_NE(r.message.find("interior pixels over"), std::string::npos) << r.message;
     EXPECT_GT(r.metrics.max_abs, 0.3) << r.id();
@@ -93,7 +93,7 @@ class CaseTree {
     if (!report) return "run failed: " + report.error().to_string();
     if (report->results.empty()) return "no cells";
     const CellResult& r = report->results.front();
-    return r.status + ": " + r.message;
+    return std::string(to_string(r.status)) + ": " + r.message;
   }
 
  private:
@@ -188,7 +188,7 @@ TEST(RealWorldHlsl5, SamplerStateSettingsReachEveryPath) {
   for (size_t i = 0; i < 3; ++i) {
     // Neither matches the constant-texture reference; what differs is how far off.
     const CellResult &n = nearest->results[i], &l = linear->results[i], &o = overridden->results[i];
-    EXPECT_EQ(n.status, "fail") << n.id();
+    EXPECT_EQ(n.status, CellStatus::fail) << n.id();
     EXPECT_NE(n.metrics.rmse, l.metrics.rmse) << n.id() << ": the SamplerState's filter made no difference";
     EXPECT_EQ(o.metrics.rmse, l.metrics.rmse) << o.id() << ": the texture's own filter did not override";
   }

@@ -58,12 +58,12 @@ TEST(Expectations, KnownFailureIsReportedAsKnownAndNewOneFails) {
   ASSERT_TRUE(known) << known.error().to_string();
   RunReport report;
   CellResult known_fail{.case_name = "phong", .variant = "pixel", .language = "glsl", .backend = "gl", .path = "glsl",
-                        .shape = "cube", .status = "fail"};
+                        .shape = "cube", .status = CellStatus::fail};
   CellResult new_fail = known_fail;
   new_fail.shape = "torus";
   CellResult now_passes = known_fail;
   now_passes.language = "hlsl";
-  now_passes.status = "pass";
+  now_passes.status = CellStatus::pass;
   report.results = {known_fail, new_fail, now_passes};
   const auto passing = apply_expectations(*known, report);
   EXPECT_TRUE(report.results[0].known_failure);

@@ -87,7 +87,7 @@ TEST(VertexInputs, NormalsReadFromTheVertexColourPassOnEveryPath) {
   ASSERT_TRUE(report) << report.error().to_string();
   std::set<std::string> paths;
   for (const CellResult& r : report->results) {
-    EXPECT_EQ(r.status, "pass") << r.id() << ": " << r.message << " / " << r.attribution_reason;
+    EXPECT_EQ(r.status, CellStatus::pass) << r.id() << ": " << r.message << " / " << r.attribution_reason;
     paths.insert(r.language + " " + r.backend + "/" + r.path);
   }
   EXPECT_EQ(paths, (std::set<std::string>{"glsl vulkan/spirv", "glsl gl/glsl", "glsl gl/spirv", "glsl gl/cross",
@@ -109,7 +109,7 @@ TEST(VertexInputs, WithoutTheMapTheUnmatchedInputIsNamedOnEveryPath) {
   ASSERT_TRUE(report) << report.error().to_string();
   ASSERT_EQ(report->results.size(), 8u);
   for (const CellResult& r : report->results) {
-    EXPECT_EQ(r.status, "error") << r.id();
+    EXPECT_EQ(r.status, CellStatus::error) << r.id();
     EXPECT_NE(r.message.find("'aPackedNormal' at location 1"), std::string::npos) << r.id() << ": " << r.message;
     EXPECT_NE(r.message.find("[attributes.glsl]"), std::string::npos) << r.message;
   }

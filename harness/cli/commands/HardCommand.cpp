@@ -47,7 +47,7 @@ Command add_hard_command(CLI::App& app) {
               }
             }
             for (const hard::HardRow& r : report->rows)
-              if (r.status != "pass") return kExitFail;
+              if (r.status != CellStatus::pass) return kExitFail;
             return 0;
           }};
 }

@@ -44,7 +44,7 @@ std::vector<std::string> distinct_errors(const RunReport& report) {
   std::vector<std::string> out;
   std::set<std::string> seen;
   for (const CellResult& cell : report.results)
-    if (cell.status == "error" && seen.insert(cell.message).second)
+    if (cell.status == CellStatus::error && seen.insert(cell.message).second)
       out.push_back(cell.language + ": " + cell.message);
   return out;
 }
@@ -65,7 +65,7 @@ std::vector<std::string> check_run(const std::string& case_path, int size) {
   // Failures, per language and attribution: "glsl: 16 cells differ (port: ...)".
   std::map<std::string, std::pair<int, std::string>> failed;
   for (const CellResult& cell : report->results)
-    if (cell.status == "fail") {
+    if (cell.status == CellStatus::fail) {
       auto& [count, why] = failed[cell.language];
       ++count;
       if (why.empty() && !cell.attribution.empty()) why = cell.attribution + ": " + cell.attribution_reason;

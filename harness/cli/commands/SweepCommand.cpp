@@ -123,7 +123,7 @@ Command add_sweep_command(CLI::App& app) {
               fmt::print("html: {}\n", written->index_path);
             }
             const bool drawn = std::none_of(sweep->points.begin(), sweep->points.end(),
-                                            [](const SweepPoint& p) { return p.status == "error"; });
+                                            [](const SweepPoint& p) { return p.status == CellStatus::error; });
             return drawn ? 0 : kExitFail;
           }};
 }
