@@ -23,7 +23,7 @@ double max_channel(const ModelParams& p, const std::string& name) {
 
 // What the GPU's filter adds to exact linear interpolation: the weights are full float
 // precision on lavapipe and llvmpipe (measured at most 1e-7 of the texel spread; see
-// tests/vulkan/VulkanTextureTest.cpp), budgeted here as 1e-6 of the spread.
+// tests/vulkan/vulkan_texture_test.cpp), budgeted here as 1e-6 of the spread.
 double filter_rounding(const Texture& t, const double* coords) {
   const uint32_t size[3] = {t.width, t.height, t.depth};
   double lo = INFINITY, hi = -INFINITY;

@@ -17,6 +17,7 @@
 #include "core/Fnv1a.h"
 #include "report/CellExplanation.h"
 #include "report/Markup.h"
+#include "report/ReportAssets.gen.h"   // report_css, report_js: generated from report/assets/
 #include "report/SummaryMatrix.h"
 
 namespace shaderbed {
@@ -517,7 +518,8 @@ class Writer {
          "style-src 'unsafe-inline'; script-src 'unsafe-inline'\">\n";
     h += fmt::format("<title>shaderbed: {} passed, {} failed, {} known, {} errors</title>\n", report_.count(CellStatus::pass), fails,
                      known, report_.count(CellStatus::error));
-    h += "<style>\n" + std::string(kCss) + "</style>\n</head>\n";
+    // A blank line before the style and the script, as the page has always had.
+    h += "<style>\n\n" + std::string(report_assets::report_css) + "</style>\n</head>\n";
     h += fmt::format("<body data-cells=\"{}\" data-images-ready=\"pending\">\n", report_.results.size());
     h += "<header><h1>shaderbed report</h1>\n<div class=\"totals\">";
     h += fmt::format("<span class=\"tot\"><b>{}</b> cells</span>", report_.results.size());
@@ -605,235 +607,9 @@ class Writer {
     // thousands of hidden cards would otherwise be parsed into the DOM on load.
     h += "<script type=\"application/json\" id=\"sb-cards\">[";
     for (size_t i = 0; i < report_.results.size(); ++i) h += (i ? ",\n" : "") + markup::script_json_string(card(i));
-    h += "]</script>\n<script>\n" + std::string(kScript) + "</script>\n</body></html>\n";
+    h += "]</script>\n<script>\n\n" + std::string(report_assets::report_js) + "</script>\n</body></html>\n";
     return h;
   }
-
-  static constexpr const char* kCss = R"css(
-figure.chart{margin:0 0 1.5em 0;max-width:1000px}figure.chart svg{width:100%;height:auto;background:#fff}
-body{font:14px/1.4 system-ui,-apple-system,"Segoe UI",sans-serif;margin:0;color:#1d1f23;background:#fafafa}
-header{padding:12px 20px;background:#fff;border-bottom:1px solid #ddd}
-h1{margin:0 0 8px;font-size:20px} h2{font-size:16px;margin:18px 0 8px}
-main{padding:0 20px 40px}
-code,pre{font:12px/1.35 ui-monospace,"DejaVu Sans Mono",monospace}
-.totals{display:flex;flex-wrap:wrap;gap:10px;align-items:center;margin-bottom:8px}
-.tot{padding:2px 8px;border-radius:4px;background:#eee}
-.verdict{font-weight:bold;padding:2px 8px;border-radius:4px}
-.verdict.ok{background:#d6f5dc;color:#145c22}.verdict.bad{background:#fbd5d5;color:#8a1111}
-.st{padding:0 6px;border-radius:3px;font-weight:600;white-space:nowrap}
-.st.pass{background:#d6f5dc;color:#145c22}.st.fail{background:#fbd5d5;color:#8a1111}
-.st.known{background:#fdf0c4;color:#6b5200}.st.error{background:#e7d4f7;color:#4b1677}.st.skipped{background:#eceff1;color:#455a64}
-table.kv{border-collapse:collapse;margin:6px 0}
-table.kv th{text-align:left;font-weight:600;padding:1px 10px 1px 0;vertical-align:top;white-space:nowrap;color:#444}
-table.kv td{padding:1px 16px 1px 0;vertical-align:top}
-nav{font-size:13px;margin-top:6px}nav a{margin-right:12px}
-.policy{color:#555;font-size:12px;margin:6px 0 0}
-.fails details.fc{background:#fff;border:1px solid #ddd;border-radius:4px;margin:6px 0;padding:4px 8px}
-.fails summary{cursor:pointer}.why{color:#555}.jump{font-size:12px;margin-left:8px}
-.card{padding:6px 2px}
-.msg{white-space:pre-wrap;background:#f4f4f4;padding:6px;margin:4px 0;max-height:16em;overflow:auto}
-.attr,.known{margin:4px 0}
-.imgs{display:flex;flex-wrap:wrap;gap:8px;margin:6px 0}
-figure{margin:0;text-align:center;font-size:12px;color:#444}
-figure img{width:192px;height:auto;image-rendering:pixelated;background:#222;border:1px solid #ccc;cursor:zoom-in;display:block}
-figure img.zoom{width:auto;max-width:none;min-width:384px;cursor:zoom-out}
-.imgs.small figure img{width:112px}
-.sib .lbl{font-size:12px;color:#555;margin-top:4px}
-.missing{color:#8a1111;font-size:12px;width:192px;padding:8px 0;border:1px dashed #c88}
-#cells{border-collapse:collapse;width:100%;background:#fff;font-size:13px}
-#cells th{position:sticky;top:0;background:#e9ecef;text-align:left;padding:4px 6px;cursor:pointer;user-select:none;white-space:nowrap;border-bottom:1px solid #bbb}
-#cells th[aria-sort=ascending]::after{content:" \25B2"}#cells th[aria-sort=descending]::after{content:" \25BC"}
-#cells td{padding:2px 6px;border-bottom:1px solid #eee;white-space:nowrap}
-#cells td.n{text-align:right;font-variant-numeric:tabular-nums}
-#cells tr.row{cursor:pointer}#cells tr.row:hover{background:#f2f6ff}
-#cells tbody.fail tr.row{background:#fff4f4}#cells tbody.error tr.row{background:#faf4ff}#cells tbody.known tr.row{background:#fffbeb}
-#cells tr.detail>td{white-space:normal;background:#fcfcfc;border-bottom:2px solid #ccc}
-.filters{margin:6px 0}
-table.matrix{border-collapse:collapse;background:#fff;font-size:13px}
-table.matrix th,table.matrix td{padding:2px 8px;border:1px solid #e3e3e3;text-align:center;white-space:nowrap}
-table.matrix th{background:#e9ecef;font-weight:600}
-table.matrix .rh{text-align:left}table.matrix td.n{text-align:right;font-variant-numeric:tabular-nums}
-table.matrix a.mxl{color:inherit;text-decoration:none;display:block}table.matrix a.mxl:hover{text-decoration:underline}
-table.matrix td.mx{font-variant-numeric:tabular-nums}table.matrix td.none{color:#bbb}
-table.matrix td.pass{background:#eef9f0}table.matrix td.fail{background:#fbd5d5;color:#8a1111;font-weight:600}
-table.matrix td.known{background:#fdf0c4;color:#6b5200}table.matrix td.error{background:#e7d4f7;color:#4b1677;font-weight:600}table.matrix td.skipped{background:#eceff1;color:#455a64}
-)css";
-
-  static constexpr const char* kScript = R"js(
-(function () {
-  'use strict';
-  var store = JSON.parse(document.getElementById('sb-images').textContent);
-  var cardStore = null;   // parsed on the first card opened
-  // Puts a lazily stored card into `el` (a detail cell or a closed failure card).
-  function fill(el) {
-    if (el.dataset.card === undefined) return;
-    if (!cardStore) cardStore = JSON.parse(document.getElementById('sb-cards').textContent);
-    el.insertAdjacentHTML('beforeend', cardStore[+el.dataset.card]);
-    delete el.dataset.card;
-  }
-  var body = document.body;
-  var table = document.getElementById('cells');
-  var timer = null;
-
-  // Readiness for people and for tests: every <img> that has a source is complete and decoded.
-  function check() {
-    var imgs = Array.prototype.slice.call(document.querySelectorAll('img[src]'));
-    if (imgs.some(function (i) { return !i.complete; })) { timer = setTimeout(check, 25); return; }
-    var ok = imgs.filter(function (i) { return i.naturalWidth > 0; }).length;
-    body.setAttribute('data-images-total', imgs.length);
-    body.setAttribute('data-images-decoded', ok);
-    body.setAttribute('data-images-ready', ok === imgs.length ? 'all' : 'broken');
-  }
-  function settle() {
-    body.setAttribute('data-images-ready', 'pending');
-    clearTimeout(timer);
-    timer = setTimeout(check, 0);
-  }
-  function show(root) {
-    var imgs = root.querySelectorAll('img[data-img]:not([src]), img[data-file]:not([src])');
-    if (!imgs.length) return;
-    Array.prototype.forEach.call(imgs, function (img) {
-      if (img.dataset.img) { img.src = store[img.dataset.img]; return; }
-      img.onerror = function () {
-        var d = document.createElement('div');
-        d.className = 'missing';
-        d.textContent = 'not embedded, not found next to the report: ' + img.title;
-        img.replaceWith(d);
-        settle();
-      };
-      img.src = img.dataset.file;
-    });
-    settle();
-  }
-  function toggle(tbody, open) {
-    var detail = tbody.rows[1];
-    if (open === undefined) open = detail.hidden;
-    detail.hidden = !open;
-    if (open) { fill(detail.cells[0]); show(detail); }
-  }
-
-  document.addEventListener('click', function (e) {
-    var img = e.target.closest('figure img');
-    if (img) { img.classList.toggle('zoom'); return; }
-    var row = e.target.closest('#cells tr.row');
-    if (row && !e.target.closest('a')) toggle(row.parentNode);
-    var jump = e.target.closest('a.jump');
-    if (jump) {
-      var target = document.getElementById(jump.getAttribute('href').slice(1));
-      if (target) {
-        if (collapsed) { filter.value = target.dataset.id; apply(); }   // just this row of a big table
-        target.hidden = false;
-        toggle(target, true);
-      }
-    }
-  });
-  document.addEventListener('keydown', function (e) {
-    if (e.key !== 'Enter' && e.key !== ' ') return;
-    var row = e.target.closest && e.target.closest('#cells tr.row');
-    if (row) { e.preventDefault(); toggle(row.parentNode); }
-    var th = e.target.closest && e.target.closest('#cells th');
-    if (th) { e.preventDefault(); sortBy(th); }
-  });
-  Array.prototype.forEach.call(document.querySelectorAll('details.fc'), function (d) {
-    if (d.open) { fill(d); show(d); }
-    d.addEventListener('toggle', function () { if (d.open) { fill(d); show(d); } });
-  });
-
-  // Sorting: numbers by data-v (unmeasured cells last either way), text by content; ties
-  // keep the run's order.
-  function sortBy(th, desc) {
-    var col = th.cellIndex, numeric = th.dataset.type === 'num';
-    if (desc === undefined) desc = th.getAttribute('aria-sort') === 'ascending';
-    var bodies = Array.prototype.slice.call(table.tBodies);
-    bodies.sort(function (a, b) {
-      var x = a.rows[0].cells[col], y = b.rows[0].cells[col], c;
-      if (numeric) {
-        var xm = x.dataset.v === '', ym = y.dataset.v === '';
-        if (xm || ym) c = xm === ym ? 0 : (xm ? 1 : -1);
-        else {
-          var xv = parseFloat(x.dataset.v), yv = parseFloat(y.dataset.v);
-          c = xv < yv ? -1 : xv > yv ? 1 : 0;
-          if (desc) c = -c;
-        }
-      } else {
-        c = x.textContent.localeCompare(y.textContent);
-        if (desc) c = -c;
-      }
-      return c || (+a.dataset.i - +b.dataset.i);
-    });
-    var frag = document.createDocumentFragment();
-    bodies.forEach(function (b) { frag.appendChild(b); });
-    table.appendChild(frag);
-    Array.prototype.forEach.call(table.tHead.rows[0].cells, function (h) { h.removeAttribute('aria-sort'); });
-    th.setAttribute('aria-sort', desc ? 'descending' : 'ascending');
-    body.setAttribute('data-sorted', th.dataset.key + (desc ? ':desc' : ''));
-  }
-  Array.prototype.forEach.call(table.tHead.rows[0].cells, function (th) {
-    th.addEventListener('click', function () { sortBy(th); });
-  });
-
-  // Filtering by text and status.
-  var filter = document.getElementById('filter'), status = document.getElementById('status');
-  var collapsed = table.dataset.collapsed === '1', note = document.getElementById('collapsed');
-  function apply() {
-    var text = filter.value.toLowerCase(), st = status.value, shown = 0;
-    if (text || st) collapsed = false;   // a big table shows rows once asked for some
-    Array.prototype.forEach.call(table.tBodies, function (b) {
-      var k = b.classList.contains('pass') ? 'pass' : b.classList.contains('fail') ? 'fail'
-            : b.classList.contains('known') ? 'known' : b.classList.contains('skipped') ? 'skipped' : 'error';
-      var ok = (!st || st === k || (st === 'failing' && k !== 'pass' && k !== 'skipped')) &&
-               (!text || b.rows[0].textContent.toLowerCase().indexOf(text) >= 0 ||
-                (b.dataset.id || '').toLowerCase().indexOf(text) >= 0);
-      b.hidden = collapsed || !ok;
-      shown += !b.hidden;
-    });
-    document.getElementById('shown').textContent = shown + ' of ' + table.tBodies.length + ' shown';
-    if (note) note.hidden = !collapsed;
-  }
-  filter.addEventListener('input', apply);
-  status.addEventListener('change', apply);
-  if (note) document.getElementById('showall').addEventListener('click', function () { collapsed = false; apply(); });
-  document.getElementById('expand').addEventListener('click', function () {
-    Array.prototype.forEach.call(table.tBodies, function (b) { if (!b.hidden) toggle(b, true); });
-  });
-  document.getElementById('collapse').addEventListener('click', function () {
-    Array.prototype.forEach.call(table.tBodies, function (b) { toggle(b, false); });
-  });
-
-  // URL fragment: #expand-all&sort=max_abs:desc&status=failing&filter=text. Read on load,
-  // on every change (back/forward) and from the matrix links, which also scroll to the table.
-  function options(hash) {
-    var expand = false, filtered = false;
-    hash.replace(/^#/, '').split('&').forEach(function (opt) {
-      if (!opt) return;
-      var eq = opt.indexOf('='), key = eq < 0 ? opt : opt.slice(0, eq), value = eq < 0 ? '' : decodeURIComponent(opt.slice(eq + 1));
-      if (key === 'filter') { filter.value = value; filtered = true; }
-      if (key === 'status') status.value = value;
-      if (key === 'expand-all') { expand = true; collapsed = false; }
-      if (key === 'sort') {
-        var parts = value.split(':'), th = table.querySelector('th[data-key="' + parts[0] + '"]');
-        if (th) sortBy(th, parts[1] === 'desc');
-      }
-    });
-    apply();
-    if (expand) Array.prototype.forEach.call(table.tBodies, function (b) { if (!b.hidden) toggle(b, true); });
-    return filtered;
-  }
-  document.addEventListener('click', function (e) {
-    var a = e.target.closest('a.mxl');
-    if (!a) return;
-    e.preventDefault();
-    try { history.pushState(null, '', a.getAttribute('href')); } catch (err) { /* some file: pages refuse */ }
-    options(a.getAttribute('href'));
-    document.getElementById('all').scrollIntoView();
-  });
-  window.addEventListener('hashchange', function () {
-    if (options(location.hash)) document.getElementById('all').scrollIntoView();
-  });
-  if (options(location.hash)) document.getElementById('all').scrollIntoView();
-  settle();
-})();
-)js";
 
   const RunReport& report_;
   fs::path dir_;

@@ -1,4 +1,4 @@
-// The faults found at the extremes, each as a plain example (OracleTest.cpp
+// The faults found at the extremes, each as a plain example (oracle_test.cpp
 // sweeps them against the 50-digit oracle): vectors whose squared length under- or
 // overflows, point lights very near and very far, a short tangent, a sharp lobe's peak.
 #include <gtest/gtest.h>

@@ -49,7 +49,7 @@ TEST(CookTorrance, GeometryAndFresnelUseVDotH) {
   EXPECT_LT(g, 2 * cos_deg(30) * cos_deg(20) / cos_deg(50));
   const double expected = schlick_f(cos_deg(50)) * blinn_d(30) * g / (cos_deg(80) * cos_deg(20));
   expect_colour_near(eval("cook_torrance", params, direction(80, 0), direction(20, 180)), expected * scale);
-  // Reciprocal in L and V (the radiance-level function; see BrdfPropertiesTest).
+  // Reciprocal in L and V (the radiance-level function; see brdf_properties_test.cpp).
   expect_colour_near(eval("cook_torrance", params, direction(20, 180), direction(80, 0)), expected * scale);
 }
 
