@@ -24,4 +24,8 @@ Result<sh::EnvironmentMap> read_probe(const std::string& path, sh::MapLayout lay
   return std::move(*map);
 }
 
+std::string naming_file(const std::string& path, const std::string& message) {
+  return message.find(path) == std::string::npos ? path + ": " + message : message;
+}
+
 }  // namespace shaderbed

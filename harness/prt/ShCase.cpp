@@ -198,6 +198,12 @@ bool is_sh_approximation_parameter(std::string_view name) {
          name == "pca_vectors" || name == "cube_size";
 }
 
+sh::TransferKind sh_transfer_kind(std::string_view name) {
+  return name == "unshadowed" ? sh::TransferKind::unshadowed
+         : name == "interreflected" ? sh::TransferKind::interreflected
+                                    : sh::TransferKind::shadowed;
+}
+
 std::expected<sh::TransferScene, std::string> sh_transfer_scene(const Mesh& shape, const glm::dvec3& albedo, bool ground) {
   std::vector<sh::TransferMesh> meshes{transfer_mesh(shape, albedo)};
   if (ground) {
@@ -293,9 +299,7 @@ Result<ShPrepared> prepare_sh(const Case& c, const Mesh& shape, const SceneSetup
   auto transfer_scene = sh_transfer_scene(shape, albedo, setup.ground);
   if (!transfer_scene) return fail_sh(transfer_scene.error());
   sh::TransferOptions options;
-  options.kind = setup.transfer == "unshadowed" ? sh::TransferKind::unshadowed
-                 : setup.transfer == "interreflected" ? sh::TransferKind::interreflected
-                                                      : sh::TransferKind::shadowed;
+  options.kind = sh_transfer_kind(setup.transfer);
   options.bands = bands;
   options.grid = int(param(c, "grid"));
   options.seed = uint64_t(param(c, "seed"));

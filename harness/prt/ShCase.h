@@ -26,6 +26,7 @@
 #include "scene/CaseFile.h"
 #include "pipeline/Mesh.h"
 #include "scene/Scene.h"
+#include "sh/Transfer.h"
 #include "sh/TransferScene.h"
 
 namespace shaderbed {
@@ -60,6 +61,9 @@ struct ShPrepared {
 // `albedo`, and with `ground` the plane it stands on as mesh 1 (albedo 0.8, 1% of the
 // shape's extent below its lowest point, 8 extents wide). Also `shaderbed sh transfer|eval`.
 std::expected<sh::TransferScene, std::string> sh_transfer_scene(const Mesh& shape, const glm::dvec3& albedo, bool ground);
+
+// A case's `[sh] transfer` (unshadowed, shadowed, interreflected) as the transfer's kind.
+sh::TransferKind sh_transfer_kind(std::string_view name);
 
 // Everything an SH case's group needs for one shape. `cache_dir` "" = no transfer cache.
 Result<ShPrepared> prepare_sh(const Case& c, const Mesh& shape, const SceneSetup& scene,

@@ -25,7 +25,7 @@ glm::dvec3 to_sh(const glm::dvec3& v) { return sh::to_sh_frame(v); }
 // fine enough that its own error (from the clamped cosine's kink and the sun's rim) is far
 // below the truncation error it measures (docs/sh.md gives the numbers).
 const std::vector<sh::Sample>& exact_quadrature() {
-  static const std::vector<sh::Sample> samples = sh::gauss_legendre_samples(96, 192);
+  static const std::vector<sh::Sample> samples = sh::gauss_legendre_samples(kExactQuadratureTheta, kExactQuadraturePhi);
   return samples;
 }
 

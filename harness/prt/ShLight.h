@@ -15,6 +15,10 @@
 
 namespace shaderbed {
 
+// The Gauss-Legendre product rule (theta x phi nodes) of the exact radiance of the lights
+// that are not deltas (ShLight.cpp says why it is fine enough).
+inline constexpr int kExactQuadratureTheta = 96, kExactQuadraturePhi = 192;
+
 class ShLight {
  public:
   virtual ~ShLight() = default;
