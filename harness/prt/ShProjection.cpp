@@ -18,7 +18,7 @@ namespace shaderbed {
 namespace {
 
 // The book's Fig. 8.14 worked example as printed (5 bands, 100 x 100 jittered samples),
-// i = 0..24 (the book's §8.2). Its zeros by symmetry (i = 5, 7, 10, ...) are Monte Carlo noise.
+// i = 0..24. Its zeros by symmetry (i = 5, 7, 10, ...) are Monte Carlo noise.
 constexpr double kBookPrinted[25] = {
     0.399249,  -0.210748, 0.286867,  0.282772,  -0.315302,  //
     -0.000398, 0.131591,  0.000977,  0.093585,  -0.249934,  //
