@@ -30,7 +30,7 @@ Result<std::vector<std::byte>> pack_uniform_block(const UniformBlock& block, con
     // position); arrays and matrices need every value.
     const size_t needed = m.array_size == 0 && m.columns == 1 ? m.vecsize : size_t(per_element) * elements;
     if (v.size() < needed) {
-      return fail("bind", "uniform '" + m.name + "' needs " + std::to_string(needed) +
+      return fail(ErrorStage::bind, "uniform '" + m.name + "' needs " + std::to_string(needed) +
                               " values, the binding supplies " + std::to_string(v.size()));
     }
     for (uint32_t e = 0; e < elements; ++e) {

@@ -76,7 +76,7 @@ Result<AttributeStream> attribute_stream_for(const StageInput& input, const Attr
     std::string streams;
     if (extra)
       for (const std::string& name : extra->names) streams += ", " + name;
-    return fail("bind", "vertex input " + describe(input) + " is mapped to '" + *word +
+    return fail(ErrorStage::bind, "vertex input " + describe(input) + " is mapped to '" + *word +
                             "', which is not a mesh attribute (position, normal, tangent, texcoord, color" + streams + ")");
   }
   if (auto a = from_extra(input.name, extra)) return *a;
@@ -88,7 +88,7 @@ Result<AttributeStream> attribute_stream_for(const StageInput& input, const Attr
     if (auto a = from_word(s)) return *a;
   }
   if (auto a = from_word(attribute_word(input.name))) return *a;
-  return fail("bind", "vertex input " + describe(input) +
+  return fail(ErrorStage::bind, "vertex input " + describe(input) +
                           " is not a mesh attribute; use POSITION, NORMAL, TANGENT, TEXCOORD0 or COLOR "
                           "(GLSL: position, normal, tangent, texcoord, color)");
 }
@@ -114,7 +114,7 @@ Result<std::vector<AttributeStream>> attribute_streams_for(const std::vector<Sta
   std::string list;
   for (size_t i = 0; i < unmatched.size(); ++i) list += (i ? ", " : "") + unmatched[i];
   const std::string lang = to_string(language);
-  return fail("bind", std::string(unmatched.size() == 1 ? "vertex input " : "vertex inputs ") + list +
+  return fail(ErrorStage::bind, std::string(unmatched.size() == 1 ? "vertex input " : "vertex inputs ") + list +
                           (unmatched.size() == 1 ? " is not a mesh attribute" : " are not mesh attributes") +
                           "; map each in the case under [attributes." + lang + "], by name or location (" +
                           first->name + " = \"normal\" or \"location " + std::to_string(first->location) +

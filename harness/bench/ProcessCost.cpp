@@ -47,12 +47,12 @@ Result<Timed> run_timed(const std::vector<std::string>& args, const fs::path& ca
   std::vector<std::string> argv = {self_binary()};
   argv.insert(argv.end(), args.begin(), args.end());
   const auto t0 = std::chrono::steady_clock::now();
-  auto exit = run_child(argv, capture, "bench", child_environment(cache_dir));
+  auto exit = run_child(argv, capture, ErrorStage::bench, child_environment(cache_dir));
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   if (!exit) return std::unexpected(exit.error());
   // run exits 1 when a cell fails: still a measurement. 2 (bad input) or a signal is not.
   if (exit->signal != 0 || exit->code > 1)
-    return fail("bench", fmt::format("'shaderbed {}' ended with {}: {}", fmt::join(args, " "), exit->how(),
+    return fail(ErrorStage::bench, fmt::format("'shaderbed {}' ended with {}: {}", fmt::join(args, " "), exit->how(),
                                      exit->stderr_text.substr(0, exit->stderr_text.find('\n'))));
   return Timed{ms, std::move(*exit)};
 }

@@ -33,15 +33,15 @@ Result<ReferenceInputs> reference_inputs(const ComparedCell& cell, const std::st
   const std::string dir = cases_dir.empty() ? default_cases_dir() : cases_dir;
   const fs::path file = fs::path(dir) / (cell.case_name + ".toml");
   if (!fs::exists(file))
-    return fail("options", fmt::format("--compare {}: no case file {}", cell.label(), file.string()));
+    return fail(ErrorStage::options, fmt::format("--compare {}: no case file {}", cell.label(), file.string()));
   auto c = load_case(file.string());
   if (!c) return std::unexpected(c.error());
   const auto variant = std::ranges::find(c->variants, cell.variant, &Variant::name);
   if (variant == c->variants.end())
-    return fail("options", fmt::format("--compare {}: case {} has no variant {}", cell.label(), cell.case_name,
+    return fail(ErrorStage::options, fmt::format("--compare {}: case {} has no variant {}", cell.label(), cell.case_name,
                                        cell.variant));
   std::optional<Mesh> mesh = make_shape(cell.shape, c->tessellation);
-  if (!mesh) return fail("options", fmt::format("--compare {}: unknown shape {}", cell.label(), cell.shape));
+  if (!mesh) return fail(ErrorStage::options, fmt::format("--compare {}: unknown shape {}", cell.label(), cell.shape));
   const LightingMode mode = variant->mode;
   return ReferenceInputs{std::move(*c), mode, std::move(*mesh)};
 }
@@ -71,7 +71,7 @@ Result<ComparedCell> parse_compared_cell(const std::string& text) {
   const size_t b = a == std::string::npos ? a : text.find('/', a + 1);
   if (b == std::string::npos || text.find('/', b + 1) != std::string::npos || a == 0 || b == a + 1 ||
       b + 1 == text.size())
-    return fail("options", fmt::format("'{}' is not case/variant/shape (e.g. phong/pixel/sphere)", text));
+    return fail(ErrorStage::options, fmt::format("'{}' is not case/variant/shape (e.g. phong/pixel/sphere)", text));
   return ComparedCell{text.substr(0, a), text.substr(a + 1, b - a - 1), text.substr(b + 1)};
 }
 
@@ -102,7 +102,7 @@ Result<ReferenceVsDrivers> time_reference_against_drivers(const ComparedCell& ce
   ReferenceVsDrivers out{cell, o.size, *reference, o.runs, {}};
   for (const CellResult& r : report->results) {
     if (r.status == CellStatus::error)
-      return fail("bench", fmt::format("{} could not be drawn: {}", r.id(), r.message));
+      return fail(ErrorStage::bench, fmt::format("{} could not be drawn: {}", r.id(), r.message));
     DriverDraw d{r.backend, r.path, r.language, r.backend == "vulkan" ? "lavapipe" : "llvmpipe", r.gpu.wall, 0};
     if (d.wall.median > 0) d.reference_ratio = reference->median / d.wall.median;
     out.draws.push_back(std::move(d));

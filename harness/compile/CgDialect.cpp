@@ -33,7 +33,7 @@ Error unsupported(const Token& at, const std::string& construct, const std::stri
                           reason + ")",
                .file = at.file,
                .line = at.line,
-               .stage = "compile"};
+               .stage = ErrorStage::compile};
 }
 
 // ---- pass 1 -----------------------------------------------------------------------
@@ -564,7 +564,7 @@ Result<void> assign_cg_varying_locations(std::vector<uint32_t>& spirv, Stage sta
                                               "TEXCOORD0-7, COLOR0/COLOR1, or COLOR for a fragment program's result)",
                                    .file = translation.entry_file.empty() ? path : translation.entry_file,
                                    .line = translation.entry_line,
-                                   .stage = "compile"});
+                                   .stage = ErrorStage::compile});
     }
     const std::string semantic = ascii_upper(semantics[id]);
     const bool target = stage == Stage::fragment && output;
@@ -580,7 +580,7 @@ Result<void> assign_cg_varying_locations(std::vector<uint32_t>& spirv, Stage sta
                                    : "varying (shaderbed links Cg varyings by semantic: TEXCOORD0-7, COLOR0, COLOR1)"),
                 .file = file,
                 .line = line,
-                .stage = "compile"});
+                .stage = ErrorStage::compile});
     }
     const uint32_t n = slots(slots, pointee[v.pointer_type]);
     for (const Placed& p : placed[output])
@@ -590,7 +590,7 @@ Result<void> assign_cg_varying_locations(std::vector<uint32_t>& spirv, Stage sta
                                                 " location(s)) overlaps " + p.what,
                                      .file = file,
                                      .line = line,
-                                     .stage = "compile"});
+                                     .stage = ErrorStage::compile});
       }
     placed[output].push_back({static_cast<uint32_t>(location), n, "'" + name + "' (" + semantic + ")"});
     spirv[location_words[id]] = static_cast<uint32_t>(location);

@@ -139,7 +139,7 @@ Result<void> check_cg_ast(glslang::TShader& shader, const std::string& path) {
           "bind, and glslang would silently drop it; pass exactly the lookup's coordinates)",
       .file = loc.name && !loc.name->empty() ? std::string(loc.name->c_str()) : path,
       .line = loc.line,
-      .stage = "compile"});
+      .stage = ErrorStage::compile});
 }
 
 }  // namespace shaderbed

@@ -26,7 +26,7 @@ const char* to_string(Language l) {
 const char* to_string(Stage s) { return s == Stage::vertex ? "vertex" : "fragment"; }
 
 Result<ShaderSource> load_shader_source(Stage stage, const std::string& path) {
-  auto text = read_bounded_file(path, "shader file", "compile");
+  auto text = read_bounded_file(path, "shader file", ErrorStage::compile);
   if (!text) return std::unexpected(text.error());
   return ShaderSource{.stage = stage, .path = path, .text = std::move(*text)};
 }

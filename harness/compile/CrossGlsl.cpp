@@ -53,7 +53,7 @@ Result<std::string> spirv_to_glsl(const std::vector<uint32_t>& spirv, Stage stag
     }
     return glsl.compile();
   } catch (const std::exception& e) {
-    return fail("cross-compile", std::string("SPIRV-Cross: ") + e.what());
+    return fail(ErrorStage::cross_compile, std::string("SPIRV-Cross: ") + e.what());
   }
 }
 

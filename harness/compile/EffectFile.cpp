@@ -67,11 +67,11 @@ class Parser {
 
  private:
   Error error_at(const Token& t, std::string message) const {
-    return Error{.message = std::move(message), .file = path_, .line = t.line, .stage = "compile"};
+    return Error{.message = std::move(message), .file = path_, .line = t.line, .stage = ErrorStage::compile};
   }
   Error error_at_end(std::string message) const {
     const int line = tokens_.empty() ? 0 : tokens_.back().line;
-    return Error{.message = std::move(message), .file = path_, .line = line, .stage = "compile"};
+    return Error{.message = std::move(message), .file = path_, .line = line, .stage = ErrorStage::compile};
   }
 
   // Finds where the item starting at `i` ends, tracking (), [] and {} nesting.
@@ -455,7 +455,7 @@ Result<EffectFile> parse_effect(std::string_view text, const std::string& path) 
     return std::unexpected(Error{.message = "effect file declares no technique (shaderbed takes a technique's "
                                             "pass for the entry points and states)",
                                  .file = path,
-                                 .stage = "compile"});
+                                 .stage = ErrorStage::compile});
   return parsed;
 }
 

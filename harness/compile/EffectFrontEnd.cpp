@@ -11,9 +11,9 @@ std::string pass_label(const EffectPass& pass, std::size_t index) {
 
 Error choice_error(const EffectChoice& choice, const std::string& effect_path, std::string message) {
   if (choice.named_in.empty())
-    return Error{.message = std::move(message), .file = effect_path, .stage = "compile"};
+    return Error{.message = std::move(message), .file = effect_path, .stage = ErrorStage::compile};
   return Error{.message = std::move(message) + " (in " + effect_path + ")", .file = choice.named_in,
-               .line = choice.line, .stage = "case"};
+               .line = choice.line, .stage = ErrorStage::case_file};
 }
 
 Result<const EffectTechnique*> find_technique(const EffectFile& effect, const EffectChoice& choice) {
@@ -40,7 +40,7 @@ Result<const EffectPass*> find_pass(const EffectFile& effect, const EffectTechni
 }
 
 Error at_compile(const EffectShaderCompile& c, const std::string& path, std::string message) {
-  return Error{.message = std::move(message), .file = path, .line = c.line, .stage = "compile"};
+  return Error{.message = std::move(message), .file = path, .line = c.line, .stage = ErrorStage::compile};
 }
 
 // The entry glslang is given: the function itself, or a wrapper passing the `compile`
@@ -109,7 +109,7 @@ Result<EffectStage> prepare_effect_stage(const ShaderSource& file, const EffectC
                                             " (shaderbed has no fixed-function pipeline)",
                                  .file = file.path,
                                  .line = (*pass)->line,
-                                 .stage = "compile"});
+                                 .stage = ErrorStage::compile});
   EffectStage out;
   out.technique = (*technique)->name;
   out.pass = (*pass)->name;

@@ -12,7 +12,7 @@ namespace shaderbed {
 namespace {
 
 Error state_error(const EffectAssignment& a, const std::string& path, std::string message) {
-  return Error{.message = std::move(message), .file = path, .line = a.line, .stage = "compile"};
+  return Error{.message = std::move(message), .file = path, .line = a.line, .stage = ErrorStage::compile};
 }
 
 // The value as one upper-case word without D3D's enum prefix (D3DCULL_CCW -> CCW), or

@@ -102,7 +102,7 @@ class Scanner {
   }
 
   Error error_at(const Token& t, std::string message) const {
-    return Error{.message = std::move(message), .file = source_.path, .line = t.physical_line, .stage = "compile"};
+    return Error{.message = std::move(message), .file = source_.path, .line = t.physical_line, .stage = ErrorStage::compile};
   }
 
   Result<void> declaration(const std::vector<Token>& t, size_t begin, size_t end, std::vector<Varying>& out) const {

@@ -68,7 +68,7 @@ std::string missing_entry_message(const ShaderSource& source) {
 Error glslang_log_error(const std::string& log, const std::string& path, const char* what) {
   static const std::regex first_error(R"((?:ERROR|error): ([^:\n]*):(\d+): ([^\n]*))");
   static const std::regex unplaced_error(R"((?:^|\n)ERROR: (#[^\n]*))");
-  Error e{.message = std::string(what) + " failed", .file = path, .stage = "compile"};
+  Error e{.message = std::string(what) + " failed", .file = path, .stage = ErrorStage::compile};
   std::smatch m;
   if (std::regex_search(log, m, unplaced_error)) {
     e.message = m[1].str();
@@ -194,7 +194,7 @@ Result<std::vector<uint32_t>> glslang_to_spirv(Language language, const ShaderSo
   // found"), without its name: say which function the file lacks and where it comes from.
   const auto missing_entry = [&](const char* log) -> std::optional<Error> {
     if (std::string(log).find("Entry point not found") == std::string::npos) return std::nullopt;
-    return Error{.message = missing_entry_message(source), .file = source.path, .stage = "compile"};
+    return Error{.message = missing_entry_message(source), .file = source.path, .stage = ErrorStage::compile};
   };
   if (!program.link(msgs)) {
     if (auto e = missing_entry(program.getInfoLog())) return std::unexpected(*e);
@@ -213,7 +213,7 @@ Result<std::vector<uint32_t>> glslang_to_spirv(Language language, const ShaderSo
   glslang::GlslangToSpv(*program.getIntermediate(stage), spirv, &logger, &options);
   const std::string log = logger.getAllMessages();
   if (spirv.empty())
-    return std::unexpected(Error{.message = "SPIR-V generation failed: " + log, .file = source.path, .stage = "compile"});
+    return std::unexpected(Error{.message = "SPIR-V generation failed: " + log, .file = source.path, .stage = ErrorStage::compile});
   if (cg)
     if (auto ok = assign_cg_varying_locations(spirv, source.stage, cg->translation, source.path); !ok)
       return std::unexpected(ok.error());

@@ -12,7 +12,7 @@ Result<void> reject_glslang_crashers(const ShaderSource& source) {
     if (tokens[i].is_identifier() && tokens[i].is("noise") && tokens[i + 1].is("("))
       return std::unexpected(Error{.message = "noise() is not supported: it crashes glslang's HLSL front end "
                                               "(glslang 12) and has no SPIR-V equivalent",
-                                   .file = tokens[i].file, .line = tokens[i].line, .stage = "compile"});
+                                   .file = tokens[i].file, .line = tokens[i].line, .stage = ErrorStage::compile});
   }
   return {};
 }

@@ -17,7 +17,7 @@ glslang::TShader::Includer::IncludeResult* HlslIncluder::includeLocal(const char
     const std::string& empty = texts_.emplace_back();
     return new IncludeResult(name, empty.data(), 0, nullptr);
   }
-  auto text = read_bounded_file(name, "#include \"" + std::string(header) + "\"", "compile");
+  auto text = read_bounded_file(name, "#include \"" + std::string(header) + "\"", ErrorStage::compile);
   if (!text)
     return failure("cannot read '" + name + "': " + text.error().message +
                    " (#include \"" + header + "\" is resolved relative to the including file)");

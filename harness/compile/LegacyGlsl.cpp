@@ -129,7 +129,7 @@ class Translator {
 
   void fail_at(const Token& t, std::string message) {
     if (!error_)
-      error_ = Error{.message = std::move(message), .file = source_.path, .line = t.physical_line, .stage = "compile"};
+      error_ = Error{.message = std::move(message), .file = source_.path, .line = t.physical_line, .stage = ErrorStage::compile};
   }
 
   void declare(const std::string& name, std::string declaration, std::string legacy = "") {

@@ -187,7 +187,7 @@ Result<std::vector<std::string>> flatten_block(std::string& text, size_t k, cons
   const std::string instance = "uniform " + type + " " + var + ";\n";
   const size_t use = text.find(instance);
   if (start == std::string::npos || end == std::string::npos || use == std::string::npos)
-    return fail("port", "SPIRV-Cross wrote GLSL 330 uniform block " + std::to_string(k) + " in an unexpected form");
+    return fail(ErrorStage::port, "SPIRV-Cross wrote GLSL 330 uniform block " + std::to_string(k) + " in an unexpected form");
   std::vector<std::string> declarations, names;
   for (size_t line = start + head.size(); line < end + 1;) {
     const size_t eol = text.find('\n', line);
@@ -203,7 +203,7 @@ Result<std::vector<std::string>> flatten_block(std::string& text, size_t k, cons
     line = eol + 1;
   }
   if (names.size() != row_major.size())
-    return fail("port", "SPIRV-Cross wrote " + std::to_string(names.size()) + " members for uniform block " +
+    return fail(ErrorStage::port, "SPIRV-Cross wrote " + std::to_string(names.size()) + " members for uniform block " +
                             std::to_string(k) + ", which has " + std::to_string(row_major.size()));
   std::string uniforms;
   for (const std::string& d : declarations) uniforms += d;
@@ -243,7 +243,7 @@ struct StagePort {
     try {
       return generate();
     } catch (const std::exception& e) {
-      return std::unexpected(Error{.message = std::string("SPIRV-Cross: ") + e.what(), .file = module.source_file, .stage = "port"});
+      return std::unexpected(Error{.message = std::string("SPIRV-Cross: ") + e.what(), .file = module.source_file, .stage = ErrorStage::port});
     }
   }
 
@@ -445,7 +445,7 @@ Result<PortTarget> parse_port_target(std::string_view name) {
   if (name == "glsl") return PortTarget::glsl;
   if (name == "glsl-gl") return PortTarget::glsl_gl;
   if (name == "hlsl") return PortTarget::hlsl;
-  return fail("port", "unknown port target '" + std::string(name) +
+  return fail(ErrorStage::port, "unknown port target '" + std::string(name) +
                           "': glsl (GLSL 450 for Vulkan), glsl-gl (GLSL 330 core for desktop GL) or hlsl (HLSL SM5)");
 }
 
@@ -467,13 +467,13 @@ std::string port_file_suffix(PortTarget target, Stage stage) {
 
 Result<PortedProgram> port_program(const CompiledProgram& original, const PortRequest& request) {
   if (original.vertex.spirv.empty() || original.fragment.spirv.empty())
-    return fail("port", "the original has no Vulkan-target SPIR-V to port");
+    return fail(ErrorStage::port, "the original has no Vulkan-target SPIR-V to port");
   PortedProgram out;
   NamePlan plan;
   try {
     plan = plan_names(original);
   } catch (const std::exception& e) {
-    return fail("port", std::string("SPIRV-Cross: ") + e.what());
+    return fail(ErrorStage::port, std::string("SPIRV-Cross: ") + e.what());
   }
   auto vs = StagePort{original.vertex, original.language, request, plan.vertex, plan.vertex_blocks, plan.vertex_instances, out.changes}.run();
   if (!vs) return std::unexpected(vs.error());

@@ -33,7 +33,7 @@ Result<ShaderSource> relax_precision(Language language, ShaderSource source) {
     if (!std::regex_search(source.text, m, version))
       return std::unexpected(Error{.message = "relaxed precision needs a #version line to put the precision statement after",
                                    .file = source.path,
-                                   .stage = "compile"});
+                                   .stage = ErrorStage::compile});
     const size_t after = size_t(m.position(0) + m.length(0));
     const size_t line = size_t(std::count(source.text.begin(), source.text.begin() + after, '\n')) + 1;
     source.text.insert(after, fmt::format("precision mediump float;\n#line {}\n", line));

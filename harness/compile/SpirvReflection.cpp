@@ -98,7 +98,7 @@ Result<Reflection> reflect_spirv(const std::vector<uint32_t>& spirv, Language la
     }
     return r;
   } catch (const std::exception& e) {
-    return fail("reflect", std::string("SPIRV-Cross reflection failed: ") + e.what());
+    return fail(ErrorStage::reflect, std::string("SPIRV-Cross reflection failed: ") + e.what());
   }
 }
 

@@ -22,7 +22,7 @@ Result<void> validate_spirv(const std::vector<uint32_t>& spirv, Target target, c
   // block layout, which glslang's HLSL offsets rely on.
   options.SetRelaxBlockLayout(true);
   if (!tools.Validate(spirv.data(), spirv.size(), options))
-    return std::unexpected(Error{.message = "spirv-val: " + messages, .file = source_path, .stage = "validate"});
+    return std::unexpected(Error{.message = "spirv-val: " + messages, .file = source_path, .stage = ErrorStage::validate});
   return {};
 }
 
@@ -37,7 +37,7 @@ Result<std::vector<uint32_t>> optimize_spirv(const std::vector<uint32_t>& spirv,
   else
     optimizer.RegisterSizePasses();
   std::vector<uint32_t> out;
-  if (!optimizer.Run(spirv.data(), spirv.size(), &out)) return fail("optimize", "spirv-opt failed: " + messages);
+  if (!optimizer.Run(spirv.data(), spirv.size(), &out)) return fail(ErrorStage::optimize, "spirv-opt failed: " + messages);
   return out;
 }
 
@@ -45,7 +45,7 @@ Result<std::vector<uint32_t>> strip_reflection_info(const std::vector<uint32_t>&
   spvtools::Optimizer optimizer(to_env(target));
   optimizer.RegisterPass(spvtools::CreateStripReflectInfoPass());
   std::vector<uint32_t> out;
-  if (!optimizer.Run(spirv.data(), spirv.size(), &out)) return fail("optimize", "stripping reflection info failed");
+  if (!optimizer.Run(spirv.data(), spirv.size(), &out)) return fail(ErrorStage::optimize, "stripping reflection info failed");
   return out;
 }
 

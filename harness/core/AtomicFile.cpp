@@ -9,7 +9,7 @@ namespace shaderbed {
 
 Result<void> write_file_atomically(const std::string& path, std::string_view bytes, const std::string& what) {
   auto bad = [&](const std::string& why) {
-    return std::unexpected(Error{.message = "cannot write " + what + ": " + why, .file = path, .stage = "report"});
+    return std::unexpected(Error{.message = "cannot write " + what + ": " + why, .file = path, .stage = ErrorStage::report});
   };
   std::error_code ec;
   if (const auto parent = std::filesystem::path(path).parent_path(); !parent.empty())

@@ -8,7 +8,7 @@
 
 namespace shaderbed {
 
-Result<std::string> read_bounded_file(const std::string& path, const std::string& what, const std::string& stage,
+Result<std::string> read_bounded_file(const std::string& path, const std::string& what, ErrorStage stage,
                                       size_t limit) {
   const auto error = [&](std::string message) {
     return std::unexpected(Error{.message = std::move(message), .file = path, .stage = stage});

@@ -14,7 +14,7 @@ constexpr size_t kMaxSourceBytes = size_t(16) << 20;   // 16 MiB: the largest li
 // The file's bytes; an Error (stage `stage`, naming the file) for a missing or unreadable
 // file, a non-regular file, or one larger than `limit`. `what` names it in the message
 // ("shader file", "#include").
-Result<std::string> read_bounded_file(const std::string& path, const std::string& what, const std::string& stage,
+Result<std::string> read_bounded_file(const std::string& path, const std::string& what, ErrorStage stage,
                                       size_t limit = kMaxSourceBytes);
 
 }  // namespace shaderbed

@@ -25,7 +25,7 @@ std::string read_text_file(const std::filesystem::path& path) {
 }
 
 Result<ChildExit> run_child(const std::vector<std::string>& args, const std::filesystem::path& capture_dir,
-                            const std::string& stage, const std::optional<std::vector<std::string>>& environment) {
+                            ErrorStage stage, const std::optional<std::vector<std::string>>& environment) {
   if (args.empty()) return fail(stage, "no program to run");
   const auto out = capture_dir / "child.stdout", err = capture_dir / "child.stderr";
   std::vector<std::string> argv_text = args, env_text = environment.value_or(std::vector<std::string>{});

@@ -26,7 +26,7 @@ struct ChildExit {
 // output goes to files in `capture_dir`. An Error (with `stage`) only when the child
 // cannot be started or waited for; a child that fails is a ChildExit saying how.
 Result<ChildExit> run_child(const std::vector<std::string>& args, const std::filesystem::path& capture_dir,
-                            const std::string& stage,
+                            ErrorStage stage,
                             const std::optional<std::vector<std::string>>& environment = std::nullopt);
 
 // A whole file as text ("" when it cannot be read).

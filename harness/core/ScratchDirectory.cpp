@@ -13,7 +13,7 @@ Result<ScratchDirectory> ScratchDirectory::create(const std::string& purpose) {
   if (ec) base = "/tmp";
   std::string pattern = (base / ("shaderbed-" + purpose + "-XXXXXX")).string();
   if (::mkdtemp(pattern.data()) == nullptr)
-    return fail(purpose, "cannot create a temporary directory under " + base.string() + ": " + std::strerror(errno));
+    return fail(ErrorStage::none, purpose + ": cannot create a temporary directory under " + base.string() + ": " + std::strerror(errno));
   return ScratchDirectory(std::filesystem::path(pattern));
 }
 

@@ -9,7 +9,7 @@ namespace fs = std::filesystem;
 
 Result<void> check_writable_folder(const std::string& path, const std::string& what) {
   auto bad = [&](const std::string& why) {
-    return std::unexpected(Error{.message = what + ": cannot write into '" + path + "': " + why, .stage = "options"});
+    return std::unexpected(Error{.message = what + ": cannot write into '" + path + "': " + why, .stage = ErrorStage::options});
   };
   std::error_code ec;
   if (!fs::exists(path, ec)) fs::create_directories(path, ec);
@@ -22,7 +22,7 @@ Result<void> check_writable_folder(const std::string& path, const std::string& w
 Result<void> check_writable_file(const std::string& path, const std::string& what) {
   std::error_code ec;
   if (fs::is_directory(path, ec))
-    return std::unexpected(Error{.message = what + ": '" + path + "' is a folder, not a file", .stage = "options"});
+    return std::unexpected(Error{.message = what + ": '" + path + "' is a folder, not a file", .stage = ErrorStage::options});
   const fs::path parent = fs::path(path).parent_path();
   return check_writable_folder(parent.empty() ? "." : parent.string(), what);
 }

@@ -124,7 +124,7 @@ Result<std::vector<Case>> select_cases(const HardOptions& o) {
   if (auto ok = check_names(o.backends, {"vulkan", "gl"}, "backend"); !ok) return std::unexpected(ok.error());
   if (auto ok = check_names(o.languages, {"glsl", "hlsl", "cg"}, "language"); !ok) return std::unexpected(ok.error());
   if (auto ok = check_names(o.scenarios, scenario_names(), "scenario"); !ok) return std::unexpected(ok.error());
-  if (o.size < 8 || o.size > 1024) return fail("options", fmt::format("--size {} is outside 8..1024", o.size));
+  if (o.size < 8 || o.size > 1024) return fail(ErrorStage::options, fmt::format("--size {} is outside 8..1024", o.size));
   return load_selected_cases(o.cases_dir.empty() ? default_cases_dir() : o.cases_dir, o.cases);
 }
 
@@ -334,14 +334,14 @@ Result<HardReport> run_hard_cases(const HardOptions& o) {
     if (c.differential())
       return std::unexpected(Error{.message = "case '" + c.name + "' has no model (it is judged against a render): "
                                               "hard probes a lighting model's numerics",
-                                   .file = c.path, .stage = "case"});
+                                   .file = c.path, .stage = ErrorStage::case_file});
   std::vector<BackendSlot> backends = start_backends(o.backends);
 
   HardReport report;
   report.size = o.size | 1;
   HardRunner runner(o, backends);
   for (const Case& c : *cases) runner.run_case(c, report);
-  if (report.rows.empty()) return fail("options", "the filters select nothing to run");
+  if (report.rows.empty()) return fail(ErrorStage::options, "the filters select nothing to run");
   summarise(report);
   report.wall_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
   return report;

@@ -54,7 +54,7 @@ const LoadedModule& image_module() {
 }
 
 Error image_error(const std::string& message, const std::string& path) {
-  return Error{.message = message, .file = path, .stage = "image"};
+  return Error{.message = message, .file = path, .stage = ErrorStage::image};
 }
 
 }  // namespace

@@ -12,7 +12,7 @@ namespace {
 Result<double> scalar(const ModelParams& p, const std::string& kind, const std::string& name) {
   auto it = p.find(name);
   if (it == p.end() || it->second.empty())
-    return fail("lut", fmt::format("LUT '{}' needs the parameter '{}'", kind, name));
+    return fail(ErrorStage::lut, fmt::format("LUT '{}' needs the parameter '{}'", kind, name));
   return it->second[0];
 }
 
@@ -20,7 +20,7 @@ Result<uint32_t> size_param(const ModelParams& p, const std::string& kind, const
   auto v = scalar(p, kind, name);
   if (!v) return std::unexpected(v.error());
   if (!(*v >= 2 && *v <= max) || std::floor(*v) != *v)
-    return fail("lut", fmt::format("LUT '{}': {} = {} must be an integer in 2..{}", kind, name, *v, max));
+    return fail(ErrorStage::lut, fmt::format("LUT '{}': {} = {} must be an integer in 2..{}", kind, name, *v, max));
   return uint32_t(*v);
 }
 
@@ -72,7 +72,7 @@ Result<Texture> generate_lut(const std::string& kind, const ModelParams& params)
     }
     return t;
   }
-  return fail("lut", fmt::format("unknown LUT '{}' (known: warn_power, oren_nayar_angle, ward_isotropic)", kind));
+  return fail(ErrorStage::lut, fmt::format("unknown LUT '{}' (known: warn_power, oren_nayar_angle, ward_isotropic)", kind));
 }
 
 double sample_linear(const Texture& t, const double* coords) {

@@ -109,7 +109,7 @@ Result<LutErrorBound> lut_error_bound(const std::string& kind, const ModelParams
                                             "|trilinear LUT - ward term| on a {}^3 LUT, plus filter rounding",
                                             min_view, band_view, lut.width)};
   }
-  return fail("lut", "no error bound for LUT '" + kind + "'");
+  return fail(ErrorStage::lut, "no error bound for LUT '" + kind + "'");
 }
 
 Result<LutErrorBound> lut_error_bound(const std::string& kind, const ModelParams& p, const Texture& lut,
@@ -151,7 +151,7 @@ Result<LutErrorBound> lut_error_bound(const std::string& kind, const ModelParams
     };
     term = "S (N.L) |trilinear LUT - ward term| at (N.L, N.V, N.H)";
   } else {
-    return fail("lut", "no error bound for LUT '" + kind + "'");
+    return fail(ErrorStage::lut, "no error bound for LUT '" + kind + "'");
   }
   // The render looks up at its own fp32 dot products, not the reference's: each within
   // kDotError (about 100 ulp of a unit dot product: interpolation, normalize and dot),

@@ -40,7 +40,7 @@ std::string first_error_line(const std::string& text) {
 Result<fs::path> find_gnuplot(const std::string& gnuplot) {
   if (gnuplot.find('/') != std::string::npos) {
     if (is_executable_file(gnuplot)) return fs::path(gnuplot);
-    return fail("plot", fmt::format("gnuplot not found at {}: {}", gnuplot, kInstallHint));
+    return fail(ErrorStage::plot, fmt::format("gnuplot not found at {}: {}", gnuplot, kInstallHint));
   }
   const char* env_path = std::getenv("PATH");
   std::string search = env_path != nullptr ? env_path : "/usr/local/bin:/usr/bin:/bin";
@@ -49,13 +49,13 @@ Result<fs::path> find_gnuplot(const std::string& gnuplot) {
     const fs::path candidate = fs::path(dir.empty() ? "." : dir) / gnuplot;  // empty entry = cwd, as execvp does
     if (is_executable_file(candidate)) return candidate;
   }
-  return fail("plot", fmt::format("{} not found on PATH: {}", gnuplot, kInstallHint));
+  return fail(ErrorStage::plot, fmt::format("{} not found on PATH: {}", gnuplot, kInstallHint));
 }
 
 Result<void> run_gnuplot(const std::string& gnuplot, const fs::path& script) {
   auto program = find_gnuplot(gnuplot);
   if (!program) return std::unexpected(program.error());
-  auto exit = run_child({program->string(), script.string()}, script.parent_path(), "plot");
+  auto exit = run_child({program->string(), script.string()}, script.parent_path(), ErrorStage::plot);
   if (!exit) {
     Error e = std::move(exit.error());
     e.message += fmt::format(" ({})", kInstallHint);
@@ -63,7 +63,7 @@ Result<void> run_gnuplot(const std::string& gnuplot, const fs::path& script) {
   }
   if (exit->succeeded()) return {};
   const std::string line = first_error_line(exit->stderr_text);
-  return fail("plot", fmt::format("gnuplot failed ({}): {}", exit->how(), line.empty() ? "no message on stderr" : line));
+  return fail(ErrorStage::plot, fmt::format("gnuplot failed ({}): {}", exit->how(), line.empty() ? "no message on stderr" : line));
 }
 
 std::string gnuplot_string(std::string_view text) {

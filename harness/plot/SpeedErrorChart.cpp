@@ -173,7 +173,7 @@ Result<void> write_text(const fs::path& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary);
   out << text;
   out.close();
-  if (!out) return std::unexpected(Error{.message = "cannot write the file", .file = path.string(), .stage = "plot"});
+  if (!out) return std::unexpected(Error{.message = "cannot write the file", .file = path.string(), .stage = ErrorStage::plot});
   return {};
 }
 
@@ -201,9 +201,9 @@ std::string inlinable_svg(std::string svg, const std::string& name, const std::s
 
 Result<ChartFiles> write_speed_error_chart(const std::vector<ChartPoint>& points, const ChartSpec& spec,
                                            const std::string& out_stem, const std::string& gnuplot) {
-  if (points.empty()) return fail("plot", fmt::format("no points to chart for '{}'", spec.title));
+  if (points.empty()) return fail(ErrorStage::plot, fmt::format("no points to chart for '{}'", spec.title));
   if (spec.width < 64 || spec.height < 64)
-    return fail("plot", fmt::format("chart size {}x{} is too small to draw", spec.width, spec.height));
+    return fail(ErrorStage::plot, fmt::format("chart size {}x{} is too small to draw", spec.width, spec.height));
 
   std::vector<double> costs, errors;
   std::vector<CostError> cost_error;
@@ -233,13 +233,13 @@ Result<ChartFiles> write_speed_error_chart(const std::vector<ChartPoint>& points
   const fs::path png = dir->path() / "chart.png", svg = dir->path() / "chart.svg";
   for (const fs::path& p : {png, svg})
     if (std::error_code ec; !fs::exists(p, ec) || fs::file_size(p, ec) == 0)
-      return fail("plot", fmt::format("gnuplot exited cleanly but wrote no {}", p.filename().string()));
+      return fail(ErrorStage::plot, fmt::format("gnuplot exited cleanly but wrote no {}", p.filename().string()));
 
   ChartFiles files{out_stem + ".png", out_stem + ".svg"};
   std::error_code ec;
   if (const fs::path parent = fs::path(out_stem).parent_path(); !parent.empty()) fs::create_directories(parent, ec);
   fs::copy_file(png, files.png, fs::copy_options::overwrite_existing, ec);
-  if (ec) return std::unexpected(Error{.message = "cannot write the chart: " + ec.message(), .file = files.png, .stage = "plot"});
+  if (ec) return std::unexpected(Error{.message = "cannot write the chart: " + ec.message(), .file = files.png, .stage = ErrorStage::plot});
   if (auto ok = write_text(files.svg, inlinable_svg(read_all(svg), name, spec.title)); !ok) return std::unexpected(ok.error());
   return files;
 }

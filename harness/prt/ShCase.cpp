@@ -37,7 +37,7 @@ Result<void> check_int(const Case& c, const std::string& name, int lo, int hi) {
   const double v = param(c, name);
   if (v != std::floor(v) || v < lo || v > hi)
     return std::unexpected(Error{.message = fmt::format("{} = {} must be a whole number in {}..{}", name, v, lo, hi),
-                                 .file = c.path, .stage = "sh"});
+                                 .file = c.path, .stage = ErrorStage::sh});
   return {};
 }
 
@@ -222,7 +222,7 @@ Result<ShPrepared> prepare_sh(const Case& c, const Mesh& shape, const SceneSetup
   const auto t0 = std::chrono::steady_clock::now();
   const ShSetup setup = c.sh.value_or(ShSetup{});
   auto fail_sh = [&](std::string message) {
-    return std::unexpected(Error{.message = std::move(message), .file = c.path, .line = setup.line, .stage = "sh"});
+    return std::unexpected(Error{.message = std::move(message), .file = c.path, .line = setup.line, .stage = ErrorStage::sh});
   };
   if (auto ok = check_int(c, "bands", 1, 8); !ok) return std::unexpected(ok.error());
   const int bands = int(param(c, "bands"));

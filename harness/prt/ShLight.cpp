@@ -183,7 +183,7 @@ class SkyShLight final : public ShLight {
 Result<std::unique_ptr<ShLight>> make_sh_light(const ShSetup& setup, const Case& c, const SceneSetup& scene,
                                                const glm::dmat3& turn) {
   auto fail_light = [&](std::string message) {
-    return std::unexpected(Error{.message = std::move(message), .file = c.path, .line = setup.line, .stage = "sh"});
+    return std::unexpected(Error{.message = std::move(message), .file = c.path, .line = setup.line, .stage = ErrorStage::sh});
   };
   const glm::dvec3 white(1.0);
   if (setup.light == "directional") {

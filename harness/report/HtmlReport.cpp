@@ -84,7 +84,7 @@ class Writer {
     fs::create_directories(dir_, ec);
     if (ec || !fs::is_directory(dir_))
       return std::unexpected(Error{.message = "cannot create the HTML report folder: " + ec.message(),
-                                   .file = dir_.string(), .stage = "report"});
+                                   .file = dir_.string(), .stage = ErrorStage::report});
     index_groups();
     if (auto ok = copy_sources(); !ok) return std::unexpected(ok.error());
     // The page without images (every image as a file link, a little longer than a store
@@ -204,7 +204,7 @@ class Writer {
         fs::copy_file(file, dir_ / rel, fs::copy_options::overwrite_existing, ec);
         if (ec)
           return std::unexpected(Error{.message = "cannot copy a shader source into the report: " + ec.message(),
-                                       .file = file, .stage = "report"});
+                                       .file = file, .stage = ErrorStage::report});
         sources_[*p] = url_path(rel.generic_string());
         ++summary_.sources_copied;
       }

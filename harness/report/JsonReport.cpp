@@ -457,7 +457,7 @@ Result<RunReport> parse_json(std::string_view text, const std::string& file) {
     j = json::parse(text);
   } catch (const json::parse_error& e) {
     // "[json.exception.parse_error.101] parse error at line 3, column 7: syntax error ..."
-    Error err{.message = e.what(), .file = file, .stage = "report"};
+    Error err{.message = e.what(), .file = file, .stage = ErrorStage::report};
     static const std::regex where(R"(^\[json\.exception\.[a-z_.0-9]+\] (parse error at line (\d+), column (\d+): )?(.*)$)");
     if (std::smatch m; std::regex_match(err.message, m, where)) {
       if (m[1].matched) {
@@ -473,23 +473,23 @@ Result<RunReport> parse_json(std::string_view text, const std::string& file) {
     const std::string what = e.what();
     const size_t tag_end = what.find("] ");
     return std::unexpected(Error{.message = "invalid JSON: " + (tag_end == std::string::npos ? what : what.substr(tag_end + 2)),
-                                 .file = file, .stage = "report"});
+                                 .file = file, .stage = ErrorStage::report});
   }
   try {
     return read_report(j);
   } catch (const BadField& b) {
     return std::unexpected(Error{.message = (b.pointer.empty() ? std::string("/") : b.pointer) + ": " + b.message,
                                  .file = file,
-                                 .stage = "report"});
+                                 .stage = ErrorStage::report});
   }
 }
 
 Result<RunReport> read_json(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) return std::unexpected(Error{.message = "cannot read results file", .file = path, .stage = "report"});
+  if (!in) return std::unexpected(Error{.message = "cannot read results file", .file = path, .stage = ErrorStage::report});
   std::ostringstream text;
   text << in.rdbuf();
-  if (in.bad()) return std::unexpected(Error{.message = "read failed", .file = path, .stage = "report"});
+  if (in.bad()) return std::unexpected(Error{.message = "read failed", .file = path, .stage = ErrorStage::report});
   return parse_json(text.str(), path);
 }
 

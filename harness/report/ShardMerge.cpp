@@ -33,7 +33,7 @@ Result<RunReport> merge_shards(std::vector<RunReport> parts, const std::vector<s
     RunReport& part = parts[i];
     const std::string& path = paths[i];
     const auto bad = [&](std::string message) {
-      return std::unexpected(Error{.message = std::move(message), .file = path, .stage = "merge"});
+      return std::unexpected(Error{.message = std::move(message), .file = path, .stage = ErrorStage::merge});
     };
     if (!part.run_id.empty()) {
       if (merged.run_id.empty()) merged.run_id = part.run_id;

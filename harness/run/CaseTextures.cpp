@@ -26,7 +26,7 @@ std::string quoted_list(const std::vector<std::string>& names) {
 Error CaseTextures::at_entry(const std::string& name, std::string message) const {
   const auto it = entries_.find(name);
   return Error{.message = std::move(message), .file = case_path_, .line = it == entries_.end() ? 0 : it->second.line,
-               .column = it == entries_.end() ? 0 : it->second.column, .stage = "bind"};
+               .column = it == entries_.end() ? 0 : it->second.column, .stage = ErrorStage::bind};
 }
 
 Result<void> CaseTextures::check(const CompiledProgram& program) {
@@ -117,7 +117,7 @@ Result<const Texture*> CaseTextures::texture(const SamplerBinding& sampler) cons
                                             "' has no binding in the case (an image: [textures] " + sampler.name +
                                             " = { file = \"...\" }; the variant's LUT: " + sampler.name +
                                             " = \"lut\" under [bindings.<language>])",
-                                 .file = case_path_, .stage = "bind"});
+                                 .file = case_path_, .stage = ErrorStage::bind});
   if (bound == "lut" && lut_ != nullptr) return lut_;
   if (generated_)
     if (auto made = generated_->find(bound); made != generated_->end()) return made->second.get();
@@ -127,7 +127,7 @@ Result<const Texture*> CaseTextures::texture(const SamplerBinding& sampler) cons
   return std::unexpected(Error{.message = "sampler '" + sampler.name + "' is bound to '" + bound +
                                           "', but this variant generates " +
                                           (offered.empty() ? "no lookup texture" : "only " + offered),
-                               .file = case_path_, .line = it->second.line, .stage = "bind"});
+                               .file = case_path_, .line = it->second.line, .stage = ErrorStage::bind});
 }
 
 SamplerSettings CaseTextures::own_settings(const std::string& name) const {

@@ -43,7 +43,7 @@ std::vector<float> upper_left_3x3(const std::vector<float>& m) {
 }  // namespace
 
 Error CaseUniforms::error(std::string message, int line) const {
-  return Error{.message = std::move(message), .file = case_path_, .line = line, .stage = "bind"};
+  return Error{.message = std::move(message), .file = case_path_, .line = line, .stage = ErrorStage::bind};
 }
 
 Result<std::vector<float>> CaseUniforms::concatenate(const Binding& binding, const UniformMember& member) const {

@@ -19,7 +19,7 @@ Result<DrawnCell> draw_cell(Backend& backend, const CellDraw& d) {
   CaseTextures textures(table, d.c.textures.for_language(d.language), d.lut, d.c.path, &d.program.sampler_settings,
                         d.additions ? &d.additions->textures : nullptr);
   if (auto ok = textures.check(d.program); !ok) return std::unexpected(ok.error());
-  if (d.flip_images && !textures.flip_images_vertically()) return fail("counterfactual", "no image to flip");
+  if (d.flip_images && !textures.flip_images_vertically()) return fail(ErrorStage::counterfactual, "no image to flip");
   drawn.texture_note = textures.reference_note();
 
   const Mesh& mesh = d.additions && d.additions->mesh ? *d.additions->mesh : d.mesh;

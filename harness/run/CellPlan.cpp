@@ -82,7 +82,7 @@ Result<Shard> parse_shard(const std::string& text) {
   };
   if (slash == std::string::npos || !number(std::string_view(text).substr(0, slash), s.index) ||
       !number(std::string_view(text).substr(slash + 1), s.count) || s.count < 1 || s.index < 1 || s.index > s.count)
-    return fail("options", fmt::format("--shard '{}' is not I/N with 1 <= I <= N", text));
+    return fail(ErrorStage::options, fmt::format("--shard '{}' is not I/N with 1 <= I <= N", text));
   return s;
 }
 

@@ -13,7 +13,7 @@ namespace shaderbed {
 
 struct BackendSlot {
   std::string name;
-  Result<std::unique_ptr<Backend>> backend = fail("backend", "not started");
+  Result<std::unique_ptr<Backend>> backend = fail(ErrorStage::backend, "not started");
 };
 
 // A slot per backend the filter selects (empty = vulkan, gl), each started here; a backend

@@ -3,7 +3,7 @@
 namespace shaderbed {
 
 Result<ReferenceImage> CellReference::cell_image(const CellResult&) const {
-  return fail("reference", "the reference has one image for the whole group");
+  return fail(ErrorStage::reference, "the reference has one image for the whole group");
 }
 
 std::optional<DrawnReferenceCell> CellReference::take_drawn(size_t) { return std::nullopt; }

@@ -52,11 +52,11 @@ bool matches(const std::string& pattern, const std::string& cell_id) {
 }
 
 Result<std::vector<KnownFailure>> load_expectations(const std::string& path) {
-  auto parsed = parse_toml_file(path, "expectations");
+  auto parsed = parse_toml_file(path, ErrorStage::expectations);
   if (!parsed) return std::unexpected(parsed.error());
   const toml::table& root = *parsed;
   std::vector<KnownFailure> known;
-  if (auto ok = check_keys(path, root, {"known"}, "the expectations file", "expectations"); !ok)
+  if (auto ok = check_keys(path, root, {"known"}, "the expectations file", ErrorStage::expectations); !ok)
     return std::unexpected(ok.error());
   const toml::array* entries = root["known"].as_array();
   if (!entries) return known;
@@ -64,17 +64,17 @@ Result<std::vector<KnownFailure>> load_expectations(const std::string& path) {
     const int line = int(node.source().begin.line);
     const toml::table* t = node.as_table();
     if (t) {
-      if (auto ok = check_keys(path, *t, {"cells", "reason"}, "[[known]]", "expectations"); !ok)
+      if (auto ok = check_keys(path, *t, {"cells", "reason"}, "[[known]]", ErrorStage::expectations); !ok)
         return std::unexpected(ok.error());
     }
     auto cells = t ? (*t)["cells"].value<std::string>() : std::nullopt;
     auto reason = t ? (*t)["reason"].value<std::string>() : std::nullopt;
     if (!cells || split(*cells).size() != 6)
       return std::unexpected(Error{.message = "each [[known]] needs cells = \"case/variant/language/backend/path/shape\"",
-                                   .file = path, .line = line, .stage = "expectations"});
+                                   .file = path, .line = line, .stage = ErrorStage::expectations});
     if (!reason || reason->empty())
       return std::unexpected(
-          Error{.message = "each [[known]] needs a reason", .file = path, .line = line, .stage = "expectations"});
+          Error{.message = "each [[known]] needs a reason", .file = path, .line = line, .stage = ErrorStage::expectations});
     known.push_back({*cells, *reason, line});
   }
   return known;

@@ -110,7 +110,7 @@ struct GroupRunner::Impl final : GroupDrawer {
     for (size_t i = 0; i < g.cells.size(); ++i) {
       const PlannedCell& cell = g.cells[i];
       CellResult r = row(cell, source);
-      Result<Image> image = fail("draw", "not drawn");
+      Result<Image> image = fail(ErrorStage::draw, "not drawn");
       if (auto drawn = reference->take_drawn(i)) {   // drawn already, as the reference
         r = std::move(drawn->result);
         image = std::move(drawn->image);
@@ -371,7 +371,7 @@ struct GroupRunner::Impl final : GroupDrawer {
       for (const Variant& other : c.variants)
         if (&other != &variant && other.shaders.contains(language))
           for (const std::string* file : {&other.shaders.at(language).vertex, &other.shaders.at(language).fragment})
-            it->second.push_back(read_bounded_file(*file, "shader file", "compile").value_or(""));
+            it->second.push_back(read_bounded_file(*file, "shader file", ErrorStage::compile).value_or(""));
     return it->second;
   }
 

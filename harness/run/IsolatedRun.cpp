@@ -113,10 +113,10 @@ bool write_all(int fd, const std::string& text) {
 // its own process group (a terminal's Ctrl-C reaches the supervisor only) and dies with us.
 Result<Worker> spawn_worker(const RunOptions& o, const std::string& options_line) {
   int commands[2], events[2];
-  if (::pipe2(commands, O_CLOEXEC) != 0) return fail("isolation", std::string("pipe: ") + std::strerror(errno));
+  if (::pipe2(commands, O_CLOEXEC) != 0) return fail(ErrorStage::isolation, std::string("pipe: ") + std::strerror(errno));
   if (::pipe2(events, O_CLOEXEC) != 0) {
     ::close(commands[0]), ::close(commands[1]);
-    return fail("isolation", std::string("pipe: ") + std::strerror(errno));
+    return fail(ErrorStage::isolation, std::string("pipe: ") + std::strerror(errno));
   }
   // Everything the child needs is built before fork: only async-signal-safe calls after it.
   std::vector<std::string> env_text = environment_keeping_crash_signals();
@@ -131,7 +131,7 @@ Result<Worker> spawn_worker(const RunOptions& o, const std::string& options_line
   const pid_t parent = ::getpid();
 
   const pid_t pid = ::fork();
-  if (pid < 0) return fail("isolation", std::string("fork: ") + std::strerror(errno));
+  if (pid < 0) return fail(ErrorStage::isolation, std::string("fork: ") + std::strerror(errno));
   if (pid == 0) {
     ::setpgid(0, 0);
     ::prctl(PR_SET_PDEATHSIG, SIGKILL);
@@ -159,7 +159,7 @@ Result<Worker> spawn_worker(const RunOptions& o, const std::string& options_line
     ::kill(pid, SIGKILL);
     ::waitpid(pid, nullptr, 0);
     close_fd(w.commands), close_fd(w.events);
-    return fail("isolation", "the worker did not take its options");
+    return fail(ErrorStage::isolation, "the worker did not take its options");
   }
   return w;
 }
@@ -201,7 +201,7 @@ class Supervisor {
       for (const Worker& w : workers_) fds.push_back({w.events, POLLIN, 0});
       fds.push_back({signal_pipe[0], POLLIN, 0});
       const int ready = ::poll(fds.data(), nfds_t(fds.size()), poll_timeout_ms());
-      if (ready < 0 && errno != EINTR) return fail("isolation", std::string("poll: ") + std::strerror(errno));
+      if (ready < 0 && errno != EINTR) return fail(ErrorStage::isolation, std::string("poll: ") + std::strerror(errno));
       if (caught_signal) return interrupted();
       for (size_t i = 0; i < workers_.size(); ++i) {
         if (fds[i].revents == 0) continue;
@@ -275,7 +275,7 @@ class Supervisor {
       if (n < 0 && (errno == EAGAIN || errno == EINTR)) return {};
       // End of the pipe: the worker is gone.
       const std::string how = end_worker(w, false);
-      if (!w.greeted) return fail("isolation", "the cell worker (" + o_.workers.worker_binary + ") ended before it started: " + how);
+      if (!w.greeted) return fail(ErrorStage::isolation, "the cell worker (" + o_.workers.worker_binary + ") ended before it started: " + how);
       lost(w, w.step == "compile" ? "compiler crashed: " + how : "crashed: " + how);
       return {};
     }

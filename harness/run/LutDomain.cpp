@@ -48,7 +48,7 @@ LutSample configuration(const glm::dvec3& position, const glm::dvec3& normal, co
 Result<LutDomain> lut_domain(const Case& c, const Mesh& mesh, const SceneSetup& setup, const std::string& shape) {
   const reference::Scene scene = surface_scene(mesh, setup, c);
   auto surface = reference::render_surface(scene);
-  if (!surface) return std::unexpected(Error{.message = surface.error(), .file = c.path, .stage = "lut"});
+  if (!surface) return std::unexpected(Error{.message = surface.error(), .file = c.path, .stage = ErrorStage::lut});
   const glm::dmat4 object_from_world = glm::inverse(setup.world);
   Shading shading;
   shading.spot_axis = glm::normalize(glm::dvec3(object_from_world * glm::dvec4(setup.lights.direction, 0.0)));

@@ -19,14 +19,14 @@ class OriginalReference final : public CellReference {
     const CellGroup& group = g.group;
     const Case& c = *group.c;
     if (!c.reference_render) {   // the case loader requires one; kept from a crash all the same
-      image_ = fail("reference", "the case names no reference");
+      image_ = fail(ErrorStage::reference, "the case names no reference");
       return;
     }
     const RenderReference& original = *c.reference_render;
     label_ = fmt::format("{} {}/{}", to_string(original.language), original.backend, original.path);
     if (!original.variant.empty()) label_ += " (variant " + original.variant + ")";
     const auto error = [&](std::string message) {
-      return std::unexpected(Error{.message = std::move(message), .file = c.path, .line = original.line, .stage = "reference"});
+      return std::unexpected(Error{.message = std::move(message), .file = c.path, .line = original.line, .stage = ErrorStage::reference});
     };
     if (!group.reference_cell) {
       image_ = error("the reference backend '" + original.backend + "' has no path '" + original.path + "'");
@@ -126,7 +126,7 @@ class OriginalReference final : public CellReference {
   std::string label_;
   std::optional<size_t> index_;
   std::optional<DrawnReferenceCell> drawn_;
-  Result<ReferenceImage> image_ = fail("reference", "not drawn");
+  Result<ReferenceImage> image_ = fail(ErrorStage::reference, "not drawn");
 };
 
 class OriginalKind final : public ReferenceKind {

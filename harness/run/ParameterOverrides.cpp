@@ -12,7 +12,7 @@ namespace shaderbed {
 Result<std::pair<std::string, std::vector<double>>> parse_parameter(const std::string& text) {
   const size_t eq = text.find('=');
   if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
-    return fail("options", fmt::format("--param '{}' is not name=value[,value...]", text));
+    return fail(ErrorStage::options, fmt::format("--param '{}' is not name=value[,value...]", text));
   std::vector<double> values;
   const std::string list = text.substr(eq + 1);
   size_t start = 0;
@@ -22,9 +22,9 @@ Result<std::pair<std::string, std::vector<double>>> parse_parameter(const std::s
     double v = 0;
     auto [end, ec] = std::from_chars(item.data(), item.data() + item.size(), v);
     if (item.empty() || ec != std::errc() || end != item.data() + item.size())
-      return fail("options", fmt::format("--param '{}': '{}' is not a number", text, item));
+      return fail(ErrorStage::options, fmt::format("--param '{}': '{}' is not a number", text, item));
     // NaN would make the render and the reference both NaN, and NaN compares as no error.
-    if (!std::isfinite(v)) return fail("options", fmt::format("--param '{}': '{}' is not a finite number", text, item));
+    if (!std::isfinite(v)) return fail(ErrorStage::options, fmt::format("--param '{}': '{}' is not a finite number", text, item));
     values.push_back(v);
     start = comma + 1;
   }
@@ -47,12 +47,12 @@ Result<void> apply_parameter_overrides(const std::vector<std::string>& overrides
       auto it = c.params.find(name);
       if (it == c.params.end()) continue;
       if (it->second.size() != values.size())
-        return fail("options", fmt::format("--param {}: case '{}' expects {} value(s), got {}", name, c.name,
+        return fail(ErrorStage::options, fmt::format("--param {}: case '{}' expects {} value(s), got {}", name, c.name,
                                            it->second.size(), values.size()));
       it->second = values;
       ++applied;
     }
-    if (applied == 0) return fail("options", fmt::format("--param {}: no selected case has a parameter '{}'", name, name));
+    if (applied == 0) return fail(ErrorStage::options, fmt::format("--param {}: no selected case has a parameter '{}'", name, name));
   }
   return {};
 }

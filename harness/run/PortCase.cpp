@@ -171,14 +171,14 @@ Result<Language> original_language(const Case& c, const std::string& from) {
     auto l = parse_language(from);
     if (!l) return std::unexpected(l.error());
     if (!languages.contains(*l))
-      return std::unexpected(Error{.message = "the case has no " + from + " shaders to port (it has " + list + ")", .file = c.path, .stage = "port"});
+      return std::unexpected(Error{.message = "the case has no " + from + " shaders to port (it has " + list + ")", .file = c.path, .stage = ErrorStage::port});
     return *l;
   }
   if (c.reference_render) return c.reference_render->language;
   if (languages.size() == 1) return *languages.begin();
   return std::unexpected(Error{.message = "the case has shaders in " + list + ": name the original with --from " +
                                           (languages.empty() ? "LANG" : to_string(*languages.begin())),
-                               .file = c.path, .stage = "port"});
+                               .file = c.path, .stage = ErrorStage::port});
 }
 
 // What one ported variant contributes to the case.
@@ -194,11 +194,11 @@ Result<PortPlan> plan_port(const PortOptions& options) {
   if (case_path.extension() != ".toml")
     return std::unexpected(Error{.message = "'port' takes a case file (.toml), and this is not one: write a case for the "
                                             "shader first (shaderbed init SHADER), then port the case",
-                                 .file = options.case_path, .stage = "port"});
+                                 .file = options.case_path, .stage = ErrorStage::port});
   auto loaded = load_case(case_path.string());
   if (!loaded) return std::unexpected(loaded.error());
   const Case& original = *loaded;
-  auto raw_parsed = parse_toml_file(case_path.string(), "case");
+  auto raw_parsed = parse_toml_file(case_path.string(), ErrorStage::case_file);
   if (!raw_parsed) return std::unexpected(raw_parsed.error());
   const toml::table& raw = *raw_parsed;
   auto from = original_language(original, options.from);
@@ -284,7 +284,7 @@ Result<PortPlan> plan_port(const PortOptions& options) {
       return std::unexpected(Error{.message = "the " + std::string(target_description(options.target)) +
                                               " port of variant '" + variant.name + "' does not compile back: " +
                                               port_compiled.error().to_string(),
-                                   .file = case_path.string(), .stage = "port"});
+                                   .file = case_path.string(), .stage = ErrorStage::port});
 
     // Bindings: each uniform the original's case binds, under the port's name.
     for (const auto& [stage_reflection, stage_port, port_reflection] :
@@ -348,7 +348,7 @@ Result<PortPlan> plan_port(const PortOptions& options) {
     ported.push_back(pv);
   }
   if (ported.empty())
-    return std::unexpected(Error{.message = "no variant of the case has " + from_name + " shaders", .file = case_path.string(), .stage = "port"});
+    return std::unexpected(Error{.message = "no variant of the case has " + from_name + " shaders", .file = case_path.string(), .stage = ErrorStage::port});
 
   for (const auto& [file, text] : shader_texts) plan.files.push_back({file, text});
 
@@ -411,7 +411,7 @@ Result<PortPlan> plan_port(const PortOptions& options) {
           if (const std::string* existing = shared->find(k); existing && *existing != v)
             return std::unexpected(Error{.message = "the port's '" + k + "' needs " + v + " but the original's case binds it to " +
                                                     *existing + " in the same [" + shared->header + "]; use --to for another language",
-                                         .file = case_path.string(), .stage = "port"});
+                                         .file = case_path.string(), .stage = ErrorStage::port});
           shared->add(k, v);
         }
       write_section(out, original_bindings);

@@ -15,7 +15,7 @@ namespace {
 Result<void> write_text(const std::string& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary);
   out << text;
-  if (!out) return std::unexpected(Error{.message = "cannot write", .file = path, .stage = "report"});
+  if (!out) return std::unexpected(Error{.message = "cannot write", .file = path, .stage = ErrorStage::report});
   return {};
 }
 

@@ -15,7 +15,7 @@
 namespace shaderbed {
 
 struct CachedProgram {
-  Result<CompiledProgram> program = fail("compile", "not compiled");
+  Result<CompiledProgram> program = fail(ErrorStage::compile, "not compiled");
   double ms = 0;                             // load + compile + count, for time_ms.compile
   CellArtefacts sources;                     // disassembly and cross GLSL paths ("" without an out folder)
   std::pair<int, int> instructions{0, 0};    // SPIR-V totals: vertex, fragment

@@ -38,7 +38,7 @@ Result<ReferenceImage> render_reference(const Mesh& mesh, const SceneSetup& s, c
   auto fb = reference::render(reference_scene(mesh, s, c), c.model,
                               mode == LightingMode::per_vertex ? reference::Mode::per_vertex : reference::Mode::per_pixel,
                               c.params, perturbation);
-  if (!fb) return std::unexpected(Error{.message = fb.error(), .file = c.path, .stage = "reference"});
+  if (!fb) return std::unexpected(Error{.message = fb.error(), .file = c.path, .stage = ErrorStage::reference});
   return ReferenceImage{fb->width, fb->height, std::move(fb->rgba), std::move(fb->coverage)};
 }
 
@@ -46,7 +46,7 @@ Result<ReferenceImage> render_reference(const Mesh& mesh, const SceneSetup& s, c
                                         const reference::LightingModel& model) {
   auto fb = reference::render(reference_scene(mesh, s, c), model,
                               mode == LightingMode::per_vertex ? reference::Mode::per_vertex : reference::Mode::per_pixel);
-  if (!fb) return std::unexpected(Error{.message = fb.error(), .file = c.path, .stage = "reference"});
+  if (!fb) return std::unexpected(Error{.message = fb.error(), .file = c.path, .stage = ErrorStage::reference});
   return ReferenceImage{fb->width, fb->height, std::move(fb->rgba), std::move(fb->coverage)};
 }
 
@@ -61,7 +61,7 @@ reference::Scene surface_scene(const Mesh& mesh, const SceneSetup& s, const Case
 
 Result<SurfaceSamples> render_surface_samples(const Mesh& mesh, const SceneSetup& s, const Case& c) {
   auto surface = reference::render_surface(surface_scene(mesh, s, c));
-  if (!surface) return std::unexpected(Error{.message = surface.error(), .file = c.path, .stage = "reference"});
+  if (!surface) return std::unexpected(Error{.message = surface.error(), .file = c.path, .stage = ErrorStage::reference});
   return surface_samples(*surface);
 }
 

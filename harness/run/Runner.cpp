@@ -46,7 +46,7 @@ Result<std::vector<Case>> select_cases(const RunOptions& o) {
     if (!c.differential() && !is_reference_model(c.model)) {
       const std::string known = fmt::format("{}", fmt::join(reference_model_names(), ", "));
       return std::unexpected(Error{.message = "unknown model '" + c.model + "' (models: " + known + ")", .file = c.path,
-                                   .line = c.model_line, .stage = "case"});
+                                   .line = c.model_line, .stage = ErrorStage::case_file});
     }
   std::vector<std::string> variant_names;
   for (const Case& c : cases)
@@ -58,7 +58,7 @@ Result<std::vector<Case>> select_cases(const RunOptions& o) {
   if (auto ok = check_names(s.languages, {"glsl", "hlsl", "cg"}, "language"); !ok) return std::unexpected(ok.error());
   if (auto ok = check_names(s.shapes, shape_names(), "shape"); !ok) return std::unexpected(ok.error());
   const int size = o.cell.size;
-  if (size < 8 || size > 4096) return fail("options", fmt::format("--size {} is outside 8..4096", size));
+  if (size < 8 || size > 4096) return fail(ErrorStage::options, fmt::format("--size {} is outside 8..4096", size));
   return cases;
 }
 
@@ -164,7 +164,7 @@ Result<std::unique_ptr<SuitePlan>> plan_suite(const RunOptions& o) {
   for (const char* name : {"vulkan", "gl"})
     if (wanted(plan->backend_names, name)) plan->backends.push_back({name});
   plan->groups = plan_cells(plan->cases, plan->backends, {s.variants, s.languages, s.shapes, s.backends});
-  if (plan->groups.empty()) return fail("options", "the filters select no cells");
+  if (plan->groups.empty()) return fail(ErrorStage::options, "the filters select no cells");
   if (shard) plan->groups = select_shard(std::move(plan->groups), *shard);
   for (const CellGroup& g : plan->groups) plan->cells += g.cells.size();
   // Stored runs are checked (folder, manifest, image size) before anything is drawn.
@@ -184,7 +184,7 @@ std::string run_identity(const RunOptions& o, const SuitePlan& plan) {
                                  cell.per_pixel_reference, cell.against_dir);
   for (const auto* list : {&o.select.variants, &o.select.backends, &o.select.languages, &o.select.shapes, &o.select.params})
     text += fmt::format("{}|", fmt::join(*list, ","));
-  for (const Case& c : plan.cases) text += c.name + "\n" + read_bounded_file(c.path, "case file", "case").value_or("") + "|";
+  for (const Case& c : plan.cases) text += c.name + "\n" + read_bounded_file(c.path, "case file", ErrorStage::case_file).value_or("") + "|";
   return hex64(fnv1a64(text));
 }
 

@@ -90,7 +90,7 @@ class ShReference final : public CellReference {
   const Case& c_;
   std::shared_ptr<const ShInputs> inputs_;
   LightingMode mode_;
-  Result<ReferenceImage> image_ = fail("reference", "not rendered");
+  Result<ReferenceImage> image_ = fail(ErrorStage::reference, "not rendered");
   std::optional<ReferenceImage> exact_;
 };
 

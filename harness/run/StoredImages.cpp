@@ -17,7 +17,7 @@ namespace {
 using ordered_json = nlohmann::ordered_json;
 
 Error stored_error(const std::string& path, std::string message) {
-  return Error{.message = std::move(message), .file = path, .stage = "stored images"};
+  return Error{.message = std::move(message), .file = path, .stage = ErrorStage::stored_images};
 }
 
 ordered_json tools_json(const ToolVersions& t) {
@@ -130,7 +130,7 @@ Result<ReferenceImage> load_stored_image(const StoredRun& run, const std::string
     return std::unexpected(stored_error(path, "the stored image was drawn with another scene (case parameters, light, "
                                               "ambient or tessellation differ)"));
   auto pixels = read_image_file(path);
-  if (!pixels) return std::unexpected(Error(pixels.error()).in_stage("stored images"));
+  if (!pixels) return std::unexpected(Error(pixels.error()).in_stage(ErrorStage::stored_images));
   if (pixels->channels != 5 || pixels->width != run.size || pixels->height != run.size)
     return std::unexpected(stored_error(path, fmt::format("expected a {0}x{0} image of 5 channels (RGBA + coverage), "
                                                           "found {1}x{2} with {3}",
@@ -172,7 +172,7 @@ Result<StoredReferences> load_stored_references(const std::string& against_dir, 
   for (const std::string& dir : dirs) {
     if (stored.runs.contains(dir)) continue;
     auto run = load_stored_run(dir, size);
-    if (!run) return std::unexpected(Error(run.error()).in_stage(against_dir.empty() ? "case" : "--against"));
+    if (!run) return std::unexpected(Error(run.error()).in_stage(against_dir.empty() ? ErrorStage::case_file : ErrorStage::against));
     stored.toolchain_notes[dir] = toolchain_difference(run->tools, tools);
     stored.runs.emplace(dir, std::move(*run));
   }

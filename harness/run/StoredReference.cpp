@@ -13,7 +13,7 @@ class StoredReference final : public CellReference {
   ReferenceSource source() const override { return {"images", "images in " + (run_ ? run_->dir : dir_), false, toolchain_note_}; }
   const Result<ReferenceImage>* group_image() const override { return nullptr; }
   Result<ReferenceImage> cell_image(const CellResult& r) const override {
-    if (!run_) return fail("reference", "the stored images in " + dir_ + " are not loaded here");
+    if (!run_) return fail(ErrorStage::reference, "the stored images in " + dir_ + " are not loaded here");
     return load_stored_image(*run_, r.id(), r.scene_hash);
   }
   bool notes_textures() const override { return !c_.differential(); }

@@ -14,7 +14,7 @@ namespace fs = std::filesystem;
 namespace {
 
 Error at_binding(const TextureBinding& b, const std::string& case_path, std::string message) {
-  return Error{.message = std::move(message), .file = case_path, .line = b.line, .column = b.column, .stage = "texture"};
+  return Error{.message = std::move(message), .file = case_path, .line = b.line, .column = b.column, .stage = ErrorStage::texture};
 }
 
 // A file's name as the case wrote it would be nicer, but the absolute path is what

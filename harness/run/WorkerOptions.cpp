@@ -72,7 +72,7 @@ std::string encode_worker_options(const WorkerOptions& o) {
 
 Result<WorkerOptions> decode_worker_options(std::string_view line) {
   const json j = json::parse(line, nullptr, false);
-  if (j.is_discarded() || !j.is_object()) return fail("worker", "the options line is not a JSON object");
+  if (j.is_discarded() || !j.is_object()) return fail(ErrorStage::worker, "the options line is not a JSON object");
   try {
     WorkerOptions o;
     j.at("select").get_to(o.select);
@@ -80,7 +80,7 @@ Result<WorkerOptions> decode_worker_options(std::string_view line) {
     j.at("process").get_to(o.process);
     return o;
   } catch (const json::exception& e) {
-    return fail("worker", std::string("the options line: ") + e.what());
+    return fail(ErrorStage::worker, std::string("the options line: ") + e.what());
   }
 }
 

@@ -17,10 +17,10 @@ Result<WorkerEvent> parse_worker_event(std::string_view line) {
     e.kind = word == "hello" ? WorkerEvent::Kind::hello : WorkerEvent::Kind::cell;
     e.report = std::move(*report);
     if (e.kind == WorkerEvent::Kind::cell && e.report.results.size() != 1)
-      return fail("worker", "a cell message holds " + std::to_string(e.report.results.size()) + " results");
+      return fail(ErrorStage::worker, "a cell message holds " + std::to_string(e.report.results.size()) + " results");
   } else if (word == "step") {
     const size_t last = rest.rfind(' ');
-    if (last == std::string_view::npos) return fail("worker", "a step message needs a cell and a step");
+    if (last == std::string_view::npos) return fail(ErrorStage::worker, "a step message needs a cell and a step");
     e.kind = WorkerEvent::Kind::step;
     e.cell_id = std::string(rest.substr(0, last));
     e.step = std::string(rest.substr(last + 1));
@@ -31,7 +31,7 @@ Result<WorkerEvent> parse_worker_event(std::string_view line) {
     for (size_t* out : counts) {
       while (numbers.starts_with(' ')) numbers.remove_prefix(1);
       const auto [end, ec] = std::from_chars(numbers.data(), numbers.data() + numbers.size(), *out);
-      if (ec != std::errc()) return fail("worker", "a done message needs three counts");
+      if (ec != std::errc()) return fail(ErrorStage::worker, "a done message needs three counts");
       numbers.remove_prefix(size_t(end - numbers.data()));
     }
   }

@@ -52,7 +52,7 @@ Result<Language> parse_language(const std::string& s) {
   if (s == "glsl") return Language::glsl;
   if (s == "hlsl") return Language::hlsl;
   if (s == "cg") return Language::cg;
-  return fail("case", "unknown language '" + s + "' (expected glsl, hlsl or cg)");
+  return fail(ErrorStage::case_file, "unknown language '" + s + "' (expected glsl, hlsl or cg)");
 }
 
 std::filesystem::path shader_root_of(const std::string& case_path) {
@@ -61,7 +61,7 @@ std::filesystem::path shader_root_of(const std::string& case_path) {
 }
 
 Result<Case> load_case(const std::string& path) {
-  auto parsed = parse_toml_file(path, "case");
+  auto parsed = parse_toml_file(path, ErrorStage::case_file);
   if (!parsed) return std::unexpected(parsed.error());
   const toml::table& root = *parsed;
   Case c;

@@ -5,7 +5,7 @@ namespace shaderbed {
 Result<ProgramSource> load_case_program(Language language, const ShaderFiles& files, const std::string& case_path) {
   auto missing = [&](const std::string& file) {
     return std::unexpected(Error{.message = "shader file not found: " + file, .file = case_path, .line = files.line,
-                                 .stage = "case"});
+                                 .stage = ErrorStage::case_file});
   };
   auto vs = load_shader_source(Stage::vertex, files.vertex);
   if (!vs) return missing(files.vertex);

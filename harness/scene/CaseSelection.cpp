@@ -22,7 +22,7 @@ Result<std::vector<Case>> load_selected_cases(const std::string& directory, cons
       continue;
     }
     if (!std::filesystem::is_regular_file(entry))
-      return std::unexpected(Error{.message = "no such case file", .file = entry, .stage = "case"});
+      return std::unexpected(Error{.message = "no such case file", .file = entry, .stage = ErrorStage::case_file});
     auto c = load_case(entry);
     if (!c) return std::unexpected(c.error());
     cases.push_back(std::move(*c));

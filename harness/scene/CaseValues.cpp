@@ -10,11 +10,11 @@ namespace shaderbed::case_sections {
 Error at(const std::string& path, const toml::node& node, std::string message) {
   const auto& src = node.source();
   return Error{.message = std::move(message), .file = path, .line = int(src.begin.line),
-               .column = int(src.begin.column), .stage = "case"};
+               .column = int(src.begin.column), .stage = ErrorStage::case_file};
 }
 
 Error at(const std::string& path, std::string message) {
-  return Error{.message = std::move(message), .file = path, .stage = "case"};
+  return Error{.message = std::move(message), .file = path, .stage = ErrorStage::case_file};
 }
 
 Result<void> plain_name(const std::string& path, const toml::node& node, const std::string& name, const char* what) {

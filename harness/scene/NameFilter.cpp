@@ -15,7 +15,7 @@ Result<void> check_names(const std::vector<std::string>& given, const std::vecto
     if (std::find(known.begin(), known.end(), g) == known.end()) {
       std::string list;
       for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
-      return fail("options", fmt::format("unknown {} '{}' (known: {})", what, g, list));
+      return fail(ErrorStage::options, fmt::format("unknown {} '{}' (known: {})", what, g, list));
     }
   return {};
 }

@@ -22,7 +22,7 @@ std::string extension_of(const std::string& path) {
 }
 
 Error bad_input(std::string message, std::string file = "") {
-  return Error{.message = std::move(message), .file = std::move(file), .stage = "init"};
+  return Error{.message = std::move(message), .file = std::move(file), .stage = ErrorStage::init};
 }
 
 struct Loaded {

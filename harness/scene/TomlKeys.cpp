@@ -35,7 +35,7 @@ std::string closest_key(std::string_view key, std::initializer_list<std::string_
   return best_distance <= std::max<size_t>(1, key.size() / 3) ? best : "";
 }
 
-Result<toml::table> parse_toml_file(const std::string& path, const std::string& stage) {
+Result<toml::table> parse_toml_file(const std::string& path, ErrorStage stage) {
   auto text = read_bounded_file(path, "TOML file", stage);
   if (!text) return std::unexpected(text.error());
   try {
@@ -48,7 +48,7 @@ Result<toml::table> parse_toml_file(const std::string& path, const std::string& 
 }
 
 Result<void> check_keys(const std::string& path, const toml::table& table, std::initializer_list<std::string_view> known,
-                        const std::string& where, const std::string& stage) {
+                        const std::string& where, ErrorStage stage) {
   for (const auto& [key, node] : table) {
     const std::string_view k = key.str();
     if (std::find(known.begin(), known.end(), k) != known.end()) continue;

@@ -13,11 +13,11 @@
 namespace shaderbed {
 
 // The parsed file; a syntax error is an Error at its line and column in `stage`.
-Result<toml::table> parse_toml_file(const std::string& path, const std::string& stage);
+Result<toml::table> parse_toml_file(const std::string& path, ErrorStage stage);
 
 // `where` names the table in the message ("the case", "[tolerance]", ...).
 Result<void> check_keys(const std::string& path, const toml::table& table, std::initializer_list<std::string_view> known,
-                        const std::string& where, const std::string& stage = "case");
+                        const std::string& where, ErrorStage stage = ErrorStage::case_file);
 
 // The known key nearest to `key` by edit distance, or "" when none is close.
 std::string closest_key(std::string_view key, std::initializer_list<std::string_view> known);

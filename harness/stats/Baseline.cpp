@@ -38,7 +38,7 @@ std::string percent(long before, long after) {
 
 Result<void> check_metric(const std::string& metric) {
   if (metric == "spirv" || metric == "spirv_opt" || metric == "spirv_os" || metric == "glsl_lines") return {};
-  return fail("options", "unknown metric '" + metric + "' (spirv, spirv_opt, spirv_os, glsl_lines)");
+  return fail(ErrorStage::options, "unknown metric '" + metric + "' (spirv, spirv_opt, spirv_os, glsl_lines)");
 }
 
 double t_critical_95(int df) {

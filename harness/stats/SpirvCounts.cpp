@@ -60,7 +60,7 @@ Result<ClassCounts> count_spirv(const std::vector<uint32_t>& spirv) {
   std::string message = diagnostic && diagnostic->error ? diagnostic->error : "spvBinaryParse failed";
   spvDiagnosticDestroy(diagnostic);
   spvContextDestroy(context);
-  if (r != SPV_SUCCESS) return fail("stats", message);
+  if (r != SPV_SUCCESS) return fail(ErrorStage::stats, message);
   return state.counts;
 }
 

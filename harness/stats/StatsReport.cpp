@@ -83,7 +83,7 @@ std::string to_json(const StatsReport& report) {
 Result<StatsReport> from_json(const std::string& text) {
   json j = json::parse(text, nullptr, false);
   if (j.is_discarded() || !j.is_object() || !j.contains("entries") || !j["entries"].is_array())
-    return fail("stats", "not a `shaderbed stats --json` file (no \"entries\" array)");
+    return fail(ErrorStage::stats, "not a `shaderbed stats --json` file (no \"entries\" array)");
   StatsReport r;
   if (j.contains("tool") && j["tool"].is_object())
     for (const auto& [k, v] : j["tool"].items())
@@ -111,14 +111,14 @@ Result<StatsReport> from_json(const std::string& text) {
       r.entries.push_back(std::move(e));
     }
   } catch (const json::exception& ex) {
-    return fail("stats", std::string("bad entry: ") + ex.what());
+    return fail(ErrorStage::stats, std::string("bad entry: ") + ex.what());
   }
   return r;
 }
 
 Result<StatsReport> read_stats_json(const std::string& path) {
   std::ifstream in(path);
-  if (!in) return std::unexpected(Error{.message = "cannot read stats JSON", .file = path, .stage = "stats"});
+  if (!in) return std::unexpected(Error{.message = "cannot read stats JSON", .file = path, .stage = ErrorStage::stats});
   std::stringstream ss;
   ss << in.rdbuf();
   auto r = from_json(ss.str());
@@ -129,7 +129,7 @@ Result<StatsReport> read_stats_json(const std::string& path) {
 Result<void> write_text_file(const std::string& path, const std::string& text) {
   std::ofstream out(path);
   if (!out || !(out << text))
-    return std::unexpected(Error{.message = "cannot write file", .file = path, .stage = "stats"});
+    return std::unexpected(Error{.message = "cannot write file", .file = path, .stage = ErrorStage::stats});
   return {};
 }
 

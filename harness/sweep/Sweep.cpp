@@ -31,14 +31,14 @@ Result<void> check_axes(const Case& c, const std::vector<SweepAxis>& axes) {
   for (size_t i = 0; i < axes.size(); ++i) {
     const SweepAxis& axis = axes[i];
     if (std::find(scalars.begin(), scalars.end(), axis.name) == scalars.end())
-      return fail("options", fmt::format("--param {}: case '{}' has no scalar parameter of that name (it has: {})",
+      return fail(ErrorStage::options, fmt::format("--param {}: case '{}' has no scalar parameter of that name (it has: {})",
                                          axis.name, c.name, fmt::join(scalars, ", ")));
     for (size_t j = 0; j < i; ++j)
-      if (axes[j].name == axis.name) return fail("options", fmt::format("--param {} is given twice", axis.name));
+      if (axes[j].name == axis.name) return fail(ErrorStage::options, fmt::format("--param {} is given twice", axis.name));
     if (axis.name == kTessellationAxis && axis.values.front() < 4)
-      return fail("options", fmt::format("--param {}: at least 4 slices", axis.name));
+      return fail(ErrorStage::options, fmt::format("--param {}: at least 4 slices", axis.name));
     if (is_lut_axis(axis.name) && axis.values.front() < 2)
-      return fail("options", fmt::format("--param {}: a LUT needs at least 2 entries per axis", axis.name));
+      return fail(ErrorStage::options, fmt::format("--param {}: a LUT needs at least 2 entries per axis", axis.name));
   }
   return {};
 }

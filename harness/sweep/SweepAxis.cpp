@@ -15,7 +15,7 @@ Result<double> number(const std::string& axis, const std::string& text) {
   double v = 0;
   auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
   if (text.empty() || ec != std::errc() || end != text.data() + text.size() || !std::isfinite(v))
-    return fail("options", fmt::format("--param {}: '{}' is not a number", axis, text));
+    return fail(ErrorStage::options, fmt::format("--param {}: '{}' is not a number", axis, text));
   return v;
 }
 
@@ -38,11 +38,11 @@ bool integer_axis(const std::string& name) {
 Result<SweepAxis> parse_sweep_axis(const std::string& text) {
   const size_t eq = text.find('=');
   if (eq == std::string::npos || eq == 0)
-    return fail("options", fmt::format("--param '{}' is not NAME=LO:HI:STEPS[:lin|:log]", text));
+    return fail(ErrorStage::options, fmt::format("--param '{}' is not NAME=LO:HI:STEPS[:lin|:log]", text));
   SweepAxis axis{text.substr(0, eq), {}, integer_axis(text.substr(0, eq))};
   const std::vector<std::string> parts = split(text.substr(eq + 1), ':');
   if (parts.size() < 3 || parts.size() > 4)
-    return fail("options", fmt::format("--param '{}' is not NAME=LO:HI:STEPS[:lin|:log]", text));
+    return fail(ErrorStage::options, fmt::format("--param '{}' is not NAME=LO:HI:STEPS[:lin|:log]", text));
   auto lo = number(axis.name, parts[0]);
   if (!lo) return std::unexpected(lo.error());
   auto hi = number(axis.name, parts[1]);
@@ -50,14 +50,14 @@ Result<SweepAxis> parse_sweep_axis(const std::string& text) {
   auto steps = number(axis.name, parts[2]);
   if (!steps) return std::unexpected(steps.error());
   if (*steps < 1 || *steps > 1000 || *steps != std::floor(*steps))
-    return fail("options", fmt::format("--param {}: STEPS must be a whole number in 1..1000, not {}", axis.name, parts[2]));
+    return fail(ErrorStage::options, fmt::format("--param {}: STEPS must be a whole number in 1..1000, not {}", axis.name, parts[2]));
   bool log = *lo > 0 && *hi / *lo >= 8;
   if (parts.size() == 4) {
     if (parts[3] != "lin" && parts[3] != "log")
-      return fail("options", fmt::format("--param {}: spacing '{}' is neither lin nor log", axis.name, parts[3]));
+      return fail(ErrorStage::options, fmt::format("--param {}: spacing '{}' is neither lin nor log", axis.name, parts[3]));
     log = parts[3] == "log";
     if (log && (*lo <= 0 || *hi <= 0))
-      return fail("options", fmt::format("--param {}: log spacing needs LO and HI > 0", axis.name));
+      return fail(ErrorStage::options, fmt::format("--param {}: log spacing needs LO and HI > 0", axis.name));
   }
   const int n = int(*steps);
   for (int i = 0; i < n; ++i) {

@@ -120,7 +120,7 @@ Result<void> write_sweep_json(const SweepResult& sweep, const std::vector<SceneC
     std::filesystem::create_directories(parent, ec);
   std::ofstream f(path);
   if (f) f << sweep_json(sweep, charts);
-  if (!f) return fail("sweep", "cannot write " + path);
+  if (!f) return fail(ErrorStage::sweep, "cannot write " + path);
   return {};
 }
 
@@ -128,7 +128,7 @@ Result<std::vector<SceneChart>> write_sweep_charts(const SweepResult& sweep, con
   std::vector<std::string> scenes;
   for (const SweepPoint& p : sweep.points)
     if (p.status != CellStatus::error && std::find(scenes.begin(), scenes.end(), p.scene) == scenes.end()) scenes.push_back(p.scene);
-  if (scenes.empty()) return fail("sweep", "no point was drawn: nothing to chart");
+  if (scenes.empty()) return fail(ErrorStage::sweep, "no point was drawn: nothing to chart");
   const auto& c = sweep.points.front().cell;
   const std::string cells = fmt::format("{}, {}, {}", c.at("language"), c.at("backend"), c.at("shape"));
   std::vector<SceneChart> charts;

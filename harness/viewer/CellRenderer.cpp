@@ -157,12 +157,12 @@ Frame CellRenderer::draw(const FrameRequest& request) {
     return finish(frame);
   };
   const Variant* variant = find_variant(c, s.variant_name());
-  if (!variant) return failed(Error{.message = "no variant '" + s.variant_name() + "'", .file = c.path, .stage = "case"});
+  if (!variant) return failed(Error{.message = "no variant '" + s.variant_name() + "'", .file = c.path, .stage = ErrorStage::case_file});
 
   const std::string mesh_key = s.shape_name() + (c.tessellation == Tessellation::high ? "/high" : "/low");
   if (!meshes_.contains(mesh_key)) {
     auto mesh = make_shape(s.shape_name(), c.tessellation);
-    if (!mesh) return failed(Error{.message = "unknown shape '" + s.shape_name() + "'", .stage = "options"});
+    if (!mesh) return failed(Error{.message = "unknown shape '" + s.shape_name() + "'", .stage = ErrorStage::options});
     meshes_.emplace(mesh_key, std::move(*mesh));
   }
   const Mesh& shape = meshes_.at(mesh_key);

@@ -55,10 +55,10 @@ CompileProbe::~CompileProbe() {
 
 Result<void> CompileProbe::start() {
   int in[2], out[2];
-  if (::pipe2(in, O_CLOEXEC) != 0) return fail("compile", std::string("pipe: ") + std::strerror(errno));
+  if (::pipe2(in, O_CLOEXEC) != 0) return fail(ErrorStage::compile, std::string("pipe: ") + std::strerror(errno));
   if (::pipe2(out, O_CLOEXEC) != 0) {
     ::close(in[0]), ::close(in[1]);
-    return fail("compile", std::string("pipe: ") + std::strerror(errno));
+    return fail(ErrorStage::compile, std::string("pipe: ") + std::strerror(errno));
   }
   std::vector<std::string> args{binary_, "__view-compile"};
   const CacheSettings caches = cache_settings();
@@ -84,7 +84,7 @@ Result<void> CompileProbe::start() {
   if (spawned != 0) {
     pid_ = -1;
     ::close(in[1]), ::close(out[0]);
-    return fail("compile", fmt::format("cannot start {}: {}", binary_, std::strerror(spawned)));
+    return fail(ErrorStage::compile, fmt::format("cannot start {}: {}", binary_, std::strerror(spawned)));
   }
   to_child_ = in[1];
   from_child_ = out[0];
@@ -121,7 +121,7 @@ Result<void> CompileProbe::compile(const Case& c, const Variant& variant, Langua
     return std::unexpected(Error{.message = fmt::format("compiler crashed: {} while compiling {}'s {} shaders ({})", how,
                                                         c.name, to_string(language), files_of(files)),
                                  .file = files.fragment,
-                                 .stage = "compile"});
+                                 .stage = ErrorStage::compile});
   };
   if (!write_all(to_child_, fmt::format("{}\t{}\t{}\n", c.path, variant.name, to_string(language))))
     return crashed(stop());
@@ -134,7 +134,7 @@ Result<void> CompileProbe::compile(const Case& c, const Variant& variant, Langua
       return std::unexpected(Error{.message = fmt::format("compiling {}'s {} shaders ({}) took over {:g} s: stopped",
                                                           c.name, to_string(language), files_of(files), timeout_s_),
                                    .file = files.fragment,
-                                   .stage = "compile"});
+                                   .stage = ErrorStage::compile});
     }
     pollfd p{from_child_, POLLIN, 0};
     const int ready = ::poll(&p, 1, int(left.count()));
@@ -149,13 +149,14 @@ Result<void> CompileProbe::compile(const Case& c, const Variant& variant, Langua
   const std::string line = buffer_.substr(0, newline);
   buffer_.erase(0, newline + 1);
   const auto parsed = nlohmann::json::parse(line, nullptr, /*allow_exceptions=*/false);
-  if (!parsed.is_object()) return fail("compile", "the compile probe answered '" + line + "'");
+  if (!parsed.is_object()) return fail(ErrorStage::compile, "the compile probe answered '" + line + "'");
   if (parsed.empty()) return {};
   return std::unexpected(Error{.message = parsed.value("message", std::string()),
                                .file = parsed.value("file", std::string()),
                                .line = parsed.value("line", 0),
                                .column = parsed.value("column", 0),
-                               .stage = parsed.value("stage", std::string("compile"))});
+                               .stage = parse_error_stage(parsed.value("stage", std::string("compile")))
+                                            .value_or(ErrorStage::compile)});
 }
 
 int serve_compile_probe() {
@@ -164,7 +165,7 @@ int serve_compile_probe() {
     const size_t a = line.find('\t'), b = line.find('\t', a == std::string::npos ? a : a + 1);
     Error error;
     if (a == std::string::npos || b == std::string::npos) {
-      error = {.message = "expected: case file, variant, language", .stage = "compile"};
+      error = {.message = "expected: case file, variant, language", .stage = ErrorStage::compile};
     } else {
       const std::string file = line.substr(0, a), variant = line.substr(a + 1, b - a - 1), language = line.substr(b + 1);
       auto c = load_case(file);
@@ -172,7 +173,7 @@ int serve_compile_probe() {
       if (!c) error = c.error();
       else if (!lang) error = lang.error();
       else {
-        error = {.message = "no variant '" + variant + "' in " + language, .file = file, .stage = "case"};
+        error = {.message = "no variant '" + variant + "' in " + language, .file = file, .stage = ErrorStage::case_file};
         for (const Variant& v : c->variants)
           if (v.name == variant && v.shaders.contains(*lang)) {
             ProgramCache programs({.opengl = true});   // fresh: the files changed since the last line
@@ -184,7 +185,7 @@ int serve_compile_probe() {
     const nlohmann::json answer =
         error.message.empty() ? nlohmann::json::object()
                               : nlohmann::json{{"message", error.message}, {"file", error.file}, {"line", error.line},
-                                               {"column", error.column}, {"stage", error.stage}};
+                                               {"column", error.column}, {"stage", to_string(error.stage)}};
     std::cout << answer.dump() << '\n' << std::flush;
   }
   return 0;

@@ -45,7 +45,7 @@ Result<std::unique_ptr<GlPresenter>> GlPresenter::create(const GlfwLibrary& glfw
   std::unique_ptr<GlPresenter> self(new GlPresenter(glfw, window));
   glfw.make_context_current(window);
   if (!self->gl_->load(glfw))
-    return fail("display", "the window's GL context lacks glDrawPixels or glWindowPos2i (GL 1.4)");
+    return fail(ErrorStage::display, "the window's GL context lacks glDrawPixels or glWindowPos2i (GL 1.4)");
   glfw.swap_interval(0);   // frames are drawn on change only; never wait for a vertical blank
   const auto* renderer = reinterpret_cast<const char*>(self->gl_->get_string(GL_RENDERER));
   self->renderer_ = renderer ? renderer : "unknown renderer";

@@ -57,7 +57,7 @@ Result<const GlfwLibrary*> glfw_library() {
     symbol(library.get_required_instance_extensions, "glfwGetRequiredInstanceExtensions");
     symbol(library.create_window_surface, "glfwCreateWindowSurface");
   });
-  if (!error.empty()) return fail("viewer", error);
+  if (!error.empty()) return fail(ErrorStage::viewer, error);
   return &library;
 }
 

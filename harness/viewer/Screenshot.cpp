@@ -12,7 +12,7 @@ namespace fs = std::filesystem;
 
 Result<std::vector<std::string>> write_screenshot(const std::string& stem, const Frame& frame,
                                                   const DisplayImage& shown, bool split) {
-  if (!frame.render) return fail("screenshot", "nothing has been drawn yet");
+  if (!frame.render) return fail(ErrorStage::screenshot, "nothing has been drawn yet");
   std::vector<std::string> written;
   const auto add = [&](Result<void> ok, std::string file) -> Result<void> {
     if (!ok) return ok;

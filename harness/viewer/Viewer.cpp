@@ -34,7 +34,7 @@ Result<Case> load_view_case(const ViewerOptions& o) {
   if (name.empty()) {
     auto files = list_case_files(o.cases_dir);
     if (!files) return std::unexpected(files.error());
-    if (files->empty()) return fail("options", "no case files in " + o.cases_dir);
+    if (files->empty()) return fail(ErrorStage::options, "no case files in " + o.cases_dir);
     const bool phong = std::ranges::any_of(*files, [](const std::string& f) { return fs::path(f).stem() == "phong"; });
     name = phong ? "phong" : fs::path(files->front()).stem().string();
   }
@@ -57,7 +57,7 @@ Result<Case> reload_case(const std::string& path, const std::vector<std::string>
   const Case& c = cases.front();
   if (!c.differential() && !reference::find_model(c.model))
     return std::unexpected(Error{.message = "unknown model '" + c.model + "'", .file = c.path, .line = c.model_line,
-                                 .stage = "case"});
+                                 .stage = ErrorStage::case_file});
   return std::move(cases.front());
 }
 
@@ -117,7 +117,7 @@ int run_viewer(const ViewerOptions& o) {
   auto window = ViewerWindow::open(content_width(o.size, state.split), o.size, title_of(state, nullptr, std::nullopt),
                                    present_api_of(state.backend));
   if (!window) {
-    if (window.error().stage == "display")
+    if (window.error().stage == ErrorStage::display)
       fmt::print(stderr,
                  "shaderbed: view needs a display: {}. Without one, run it under a virtual X server: "
                  "xvfb-run -a shaderbed view ...\n",

@@ -108,7 +108,7 @@ Result<ViewerState> initial_state(const Case& c, const CellChoice& choice) {
   ViewerState s;
   s.menu = menu_of(c);
   s.parameters = s.menu.parameters;
-  if (s.menu.variants.empty()) return fail("options", "case '" + c.name + "' has no variants");
+  if (s.menu.variants.empty()) return fail(ErrorStage::options, "case '" + c.name + "' has no variants");
   const auto names = [](const auto& list, auto name) {
     std::string text;
     for (const auto& item : list) text += (text.empty() ? "" : ", ") + std::string(name(item));
@@ -118,25 +118,25 @@ Result<ViewerState> initial_state(const Case& c, const CellChoice& choice) {
   if (!choice.variant.empty()) {
     const auto it = std::ranges::find(s.menu.variants, choice.variant);
     if (it == s.menu.variants.end())
-      return fail("options", fmt::format("case '{}' has no variant '{}' (it has {})", c.name, choice.variant,
+      return fail(ErrorStage::options, fmt::format("case '{}' has no variant '{}' (it has {})", c.name, choice.variant,
                                          names(s.menu.variants, identity)));
     s.variant = size_t(it - s.menu.variants.begin());
   }
   const auto& languages = languages_of(s);
   if (languages.empty())
-    return fail("options", fmt::format("variant '{}' of case '{}' names no shaders", s.variant_name(), c.name));
+    return fail(ErrorStage::options, fmt::format("variant '{}' of case '{}' names no shaders", s.variant_name(), c.name));
   s.language = languages.front();
   if (!choice.language.empty()) {
     auto language = parse_language(choice.language);
     if (!language) return std::unexpected(language.error());
     if (std::ranges::find(languages, *language) == languages.end())
-      return fail("options", fmt::format("variant '{}' of case '{}' has no {} shaders (it has {})", s.variant_name(),
+      return fail(ErrorStage::options, fmt::format("variant '{}' of case '{}' has no {} shaders (it has {})", s.variant_name(),
                                          c.name, choice.language, names(languages, [](Language l) { return to_string(l); })));
     s.language = *language;
   }
   if (!choice.backend.empty()) {
     if (choice.backend != "vulkan" && choice.backend != "gl")
-      return fail("options", "unknown backend '" + choice.backend + "' (backends: vulkan, gl)");
+      return fail(ErrorStage::options, "unknown backend '" + choice.backend + "' (backends: vulkan, gl)");
     s.backend = choice.backend;
   }
   const std::vector<ShaderPath> paths = backend_paths(s.backend, s.language);
@@ -144,14 +144,14 @@ Result<ViewerState> initial_state(const Case& c, const CellChoice& choice) {
   if (!choice.path.empty()) {
     const auto it = std::ranges::find_if(paths, [&](ShaderPath p) { return choice.path == to_string(p); });
     if (it == paths.end())
-      return fail("options", fmt::format("backend {} has no path '{}' for {} (paths: {})", s.backend, choice.path,
+      return fail(ErrorStage::options, fmt::format("backend {} has no path '{}' for {} (paths: {})", s.backend, choice.path,
                                          to_string(s.language), names(paths, [](ShaderPath p) { return to_string(p); })));
     s.path = *it;
   }
   if (!choice.shape.empty()) {
     const auto it = std::ranges::find(s.menu.shapes, choice.shape);
     if (it == s.menu.shapes.end())
-      return fail("options",
+      return fail(ErrorStage::options,
                   fmt::format("unknown shape '{}' (shapes: {})", choice.shape, names(s.menu.shapes, identity)));
     s.shape = size_t(it - s.menu.shapes.begin());
   }

@@ -115,7 +115,7 @@ struct ViewerWindow::Impl {
     take_error();
     window = glfw->create_window(width, height, title.c_str(), nullptr, nullptr);
     if (!window)
-      return fail("display", std::string(with == PresentApi::vulkan ? "cannot open a window for Vulkan: "
+      return fail(ErrorStage::display, std::string(with == PresentApi::vulkan ? "cannot open a window for Vulkan: "
                                                                      : "cannot open a window with a GL context: ") +
                                  take_error());
     pin_loaded_libraries_for_leak_reports();   // the GL window's DRI driver, which GLX closes with it
@@ -208,7 +208,7 @@ Result<std::unique_ptr<ViewerWindow>> ViewerWindow::open(int width, int height, 
   const GlfwLibrary& glfw = **library;
   glfw.set_error_callback(record_error);
   if (!glfw.init())
-    return std::unexpected(Error{.message = "no display to open a window on (" + take_error() + ")", .stage = "display"});
+    return std::unexpected(Error{.message = "no display to open a window on (" + take_error() + ")", .stage = ErrorStage::display});
   auto impl = std::make_unique<Impl>();
   impl->glfw = &glfw;
   impl->title = title;

@@ -19,7 +19,7 @@ namespace {
 
 constexpr uint64_t kWaitNs = 10'000'000'000;   // a present or a copy of a window's pixels: far less
 
-Error display_error(std::string message) { return Error{.message = std::move(message), .stage = "display"}; }
+Error display_error(std::string message) { return Error{.message = std::move(message), .stage = ErrorStage::display}; }
 
 const char* format_name(VkFormat f) {
   switch (f) {
@@ -90,11 +90,11 @@ Result<std::unique_ptr<VulkanPresenter>> VulkanPresenter::create(const GlfwLibra
   std::unique_ptr<VulkanPresenter> self(new VulkanPresenter(glfw, window));
   // What the description claims: the window has no GL context (nor any other client API's).
   if (glfw.get_window_attrib(window, GLFW_CLIENT_API) != GLFW_NO_API)
-    return fail("display", "the window has a GL context; a Vulkan swapchain needs one created with GLFW_NO_API");
-  if (!glfw.vulkan_supported()) return fail("display", "GLFW finds no Vulkan loader (libvulkan.so.1)");
+    return fail(ErrorStage::display, "the window has a GL context; a Vulkan swapchain needs one created with GLFW_NO_API");
+  if (!glfw.vulkan_supported()) return fail(ErrorStage::display, "GLFW finds no Vulkan loader (libvulkan.so.1)");
   uint32_t count = 0;
   const char** required = glfw.get_required_instance_extensions(&count);
-  if (!required) return fail("display", "GLFW knows no Vulkan surface extension for this window system");
+  if (!required) return fail(ErrorStage::display, "GLFW knows no Vulkan surface extension for this window system");
   const std::vector<const char*> extensions(required, required + count);
   for (const char* e : extensions)
     if (std::strcmp(e, VK_KHR_SURFACE_EXTENSION_NAME) != 0) self->surface_extension_ = e;
@@ -316,7 +316,7 @@ Result<void> VulkanPresenter::present(const DisplayImage& image, bool alert, Dis
     bool retry = false;
     if (auto ok = present_once(image, alert, capture, retry); !ok || !retry) return ok;
   }
-  return fail("display", "the window's swapchain stayed out of date");
+  return fail(ErrorStage::display, "the window's swapchain stayed out of date");
 }
 
 Result<void> VulkanPresenter::present_once(const DisplayImage& image, bool alert, DisplayImage* capture, bool& retry) {

@@ -40,7 +40,7 @@ class TransformResolver final : public UniformResolver {
   }
   Result<std::vector<float>> value(const UniformBlock&, const UniformMember& member) const override {
     if (member.name == "Transform") return transform_;
-    return fail("bind", "no value for '" + member.name + "'");
+    return fail(ErrorStage::bind, "no value for '" + member.name + "'");
   }
 
  private:
@@ -63,7 +63,7 @@ inline Result<Image> draw_with_states(Backend& backend, ShaderPath path, const s
   auto program = compile_state_effect(states, alpha);
   if (!program) return std::unexpected(program.error());
   auto mesh = make_shape(shape, Tessellation::low);
-  if (!mesh) return fail("test", "no shape " + shape);
+  if (!mesh) return fail(ErrorStage::none, "test: no shape " + shape);
   const TransformResolver uniforms(size);
   DrawJob job{.program = *program, .path = path, .mesh = *mesh, .uniforms = uniforms, .width = size, .height = size};
   job.render_state = program->render_state;
@@ -98,7 +98,7 @@ class EffectSamplerTextures final : public TextureResolver {
   Result<const Texture*> texture(const SamplerBinding&) const override { return &texture_; }
   Result<SamplerSettings> settings(const SamplerBinding& sampler) const override {
     auto it = settings_.find(sampler.name);
-    if (it == settings_.end()) return fail("bind", "no sampler_state for '" + sampler.name + "'");
+    if (it == settings_.end()) return fail(ErrorStage::bind, "no sampler_state for '" + sampler.name + "'");
     return it->second;
   }
 
@@ -126,7 +126,7 @@ inline Result<std::array<float, 4>> sampled_colour(Backend& backend, ShaderPath 
     if (out->image.coverage[i])
       return std::array<float, 4>{out->image.rgba[i * 4], out->image.rgba[i * 4 + 1], out->image.rgba[i * 4 + 2],
                                   out->image.rgba[i * 4 + 3]};
-  return fail("test", "nothing drawn");
+  return fail(ErrorStage::none, "test: nothing drawn");
 }
 
 inline int covered(const Image& image) {

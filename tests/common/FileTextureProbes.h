@@ -73,7 +73,7 @@ class SettingsResolver final : public TextureResolver {
       : textures_(std::move(textures)), settings_(std::move(settings)) {}
   Result<const Texture*> texture(const SamplerBinding& sampler) const override {
     auto it = textures_.find(sampler.name);
-    if (it == textures_.end()) return fail("bind", "no texture bound");
+    if (it == textures_.end()) return fail(ErrorStage::bind, "no texture bound");
     return &it->second;
   }
   Result<SamplerSettings> settings(const SamplerBinding& sampler) const override {

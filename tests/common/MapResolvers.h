@@ -16,7 +16,7 @@ class MapResolver final : public UniformResolver {
   explicit MapResolver(std::map<std::string, std::vector<float>> values) : values_(std::move(values)) {}
   Result<std::vector<float>> value(const UniformBlock&, const UniformMember& member) const override {
     if (auto it = values_.find(member.name); it != values_.end()) return it->second;
-    return fail("bind", "no value bound");
+    return fail(ErrorStage::bind, "no value bound");
   }
 
  private:
@@ -29,7 +29,7 @@ class MapTextureResolver final : public TextureResolver {
   explicit MapTextureResolver(std::map<std::string, Texture> textures) : textures_(std::move(textures)) {}
   Result<const Texture*> texture(const SamplerBinding& sampler) const override {
     if (auto it = textures_.find(sampler.name); it != textures_.end()) return &it->second;
-    return fail("bind", "no texture bound");
+    return fail(ErrorStage::bind, "no texture bound");
   }
 
  private:

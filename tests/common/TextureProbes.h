@@ -110,7 +110,7 @@ inline const Texture kTexture2D = make_texture("lut2d", 2, 4, 2, 1, {0.1f, 0.7f,
 inline Result<std::vector<float>> sample(const TextureBench& bench, const CompiledProgram& program,
                                          const TextureResolver& textures, const std::vector<UvProbe>& probes,
                                          const std::string& coords_member = "coords") {
-  if (probes.size() > size_t(kMaxProbes)) return fail("test", "too many probes");
+  if (probes.size() > size_t(kMaxProbes)) return fail(ErrorStage::none, "test: too many probes");
   std::vector<float> coords(size_t(kMaxProbes) * 4, 0.0f);
   for (size_t p = 0; p < probes.size(); ++p) {
     coords[p * 4 + 0] = probes[p].u;

@@ -291,7 +291,7 @@ TEST(CgDialect, CgErrorCarriesFileAndLine) {
   ASSERT_FALSE(m);
   EXPECT_EQ(m.error().file, "broken_fp.cg");
   EXPECT_EQ(m.error().line, 5);
-  EXPECT_EQ(m.error().stage, "compile");
+  EXPECT_EQ(m.error().stage, ErrorStage::compile);
 }
 
 struct UnsupportedCase {
@@ -362,7 +362,7 @@ TEST(CgDialect, EachUnsupportedConstructIsOneNamedErrorAtItsLine) {
       const Error& e = m.error();
       EXPECT_EQ(e.file, "unsupported.cg");
       EXPECT_EQ(e.line, 3) << e.to_string();
-      EXPECT_EQ(e.stage, "compile");
+      EXPECT_EQ(e.stage, ErrorStage::compile);
       EXPECT_NE(
           e.message.find(std::string("Cg feature '") + c.construct + "' is not supported by shaderbed's Cg layer"),
           std::string::npos)

@@ -39,7 +39,7 @@ TEST(GlErrors, RejectsEmptyAndHugeTargets) {
   for (auto [w, h] : {std::pair{0, 16}, std::pair{16, -1}, std::pair{1 << 20, 16}}) {
     auto out = render_small(program, ShaderPath::native_glsl, ndc_rectangle(-1, -1, 1, 1), w, h);
     ASSERT_FALSE(out) << w << "x" << h;
-    EXPECT_EQ(out.error().stage, "gl");
+    EXPECT_EQ(out.error().stage, ErrorStage::gl);
   }
 }
 

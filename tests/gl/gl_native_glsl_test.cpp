@@ -119,7 +119,7 @@ void main() {
   EXPECT_EQ(e.file, "broken.frag");
   EXPECT_EQ(e.line, 5);
   EXPECT_GT(e.column, 0);
-  EXPECT_EQ(e.stage, "gl");
+  EXPECT_EQ(e.stage, ErrorStage::gl);
   EXPECT_EQ(e.backend, "gl");
   EXPECT_NE(e.message.find("undeclared_thing"), std::string::npos) << e.to_string();
   EXPECT_NE(e.message.find("glsl path"), std::string::npos) << e.to_string();

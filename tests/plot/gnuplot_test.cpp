@@ -41,7 +41,7 @@ TEST(Gnuplot, AFailingScriptReportsGnuplotsErrorLine) {
   std::ofstream(script) << "set terminal dumb\nset output '/dev/null'\nplot no_such_variable_here\n";
   auto ran = run_gnuplot("gnuplot", script);
   ASSERT_FALSE(ran);
-  EXPECT_EQ(ran.error().stage, "plot");
+  EXPECT_EQ(ran.error().stage, ErrorStage::plot);
   EXPECT_NE(ran.error().message.find("gnuplot failed (exit 1)"), std::string::npos) << ran.error().message;
   EXPECT_NE(ran.error().message.find("no_such_variable_here"), std::string::npos) << ran.error().message;
 }

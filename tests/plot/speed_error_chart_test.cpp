@@ -227,7 +227,7 @@ TEST(SpeedErrorChart, ClearErrorWhenGnuplotIsNotOnPath) {
   ::setenv("PATH", saved_path.c_str(), 1);
 
   ASSERT_FALSE(files);
-  EXPECT_EQ(files.error().stage, "plot");
+  EXPECT_EQ(files.error().stage, ErrorStage::plot);
   EXPECT_EQ(files.error().message, "gnuplot not found on PATH: install gnuplot-nox (scripts/install-deps)");
   EXPECT_FALSE(fs::exists(dir / "chart.png"));
   EXPECT_FALSE(fs::exists(dir / "chart.svg"));
@@ -237,7 +237,7 @@ TEST(SpeedErrorChart, ClearErrorForAGnuplotPathThatDoesNotExist) {
   const fs::path dir = output_dir();
   auto files = write_speed_error_chart(lut_sweep(), {.title = "t"}, (dir / "chart").string(), (dir / "no-gnuplot").string());
   ASSERT_FALSE(files);
-  EXPECT_EQ(files.error().stage, "plot");
+  EXPECT_EQ(files.error().stage, ErrorStage::plot);
   EXPECT_NE(files.error().message.find("gnuplot not found at"), std::string::npos) << files.error().message;
   EXPECT_NE(files.error().message.find("gnuplot-nox"), std::string::npos) << files.error().message;
 }
@@ -245,7 +245,7 @@ TEST(SpeedErrorChart, ClearErrorForAGnuplotPathThatDoesNotExist) {
 TEST(SpeedErrorChart, RefusesAnEmptyPointSet) {
   auto files = write_speed_error_chart({}, {.title = "nothing"}, (output_dir() / "chart").string());
   ASSERT_FALSE(files);
-  EXPECT_EQ(files.error().stage, "plot");
+  EXPECT_EQ(files.error().stage, ErrorStage::plot);
 }
 
 }  // namespace

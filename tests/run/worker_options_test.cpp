@@ -70,7 +70,7 @@ TEST(WorkerOptions, BadLinesAreErrors) {
   for (const char* line : {"", "not json", "[]", "{}", R"({"select": {}, "cell": {}, "process": {}})"}) {
     const auto decoded = decode_worker_options(line);
     ASSERT_FALSE(decoded) << line;
-    EXPECT_EQ(decoded.error().stage, "worker") << line;
+    EXPECT_EQ(decoded.error().stage, ErrorStage::worker) << line;
   }
 }
 

@@ -84,7 +84,7 @@ TEST(DifferentialCase, BadReferencesAreErrorsAtTheirLine) {
     auto c = load_differential(bad[i].first, bad[i].second);
     ASSERT_FALSE(c) << bad[i].second;
     EXPECT_NE(c.error().message.find(expected[i]), std::string::npos) << c.error().to_string();
-    EXPECT_EQ(c.error().stage, "case");
+    EXPECT_EQ(c.error().stage, ErrorStage::case_file);
   }
 }
 

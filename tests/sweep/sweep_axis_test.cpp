@@ -30,7 +30,7 @@ TEST(SweepAxis, BadTextIsAnErrorNamingTheAxis) {
                           "lut_size=8:256:6:cubic", "power=-1:10:3:log", "=1:2:3"}) {
     auto axis = parse_sweep_axis(bad);
     ASSERT_FALSE(axis) << bad;
-    EXPECT_EQ(axis.error().stage, "options") << bad;
+    EXPECT_EQ(axis.error().stage, ErrorStage::options) << bad;
   }
   EXPECT_NE(parse_sweep_axis("power=1:x:3").error().message.find("'x' is not a number"), std::string::npos);
 }

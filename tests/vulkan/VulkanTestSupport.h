@@ -94,7 +94,7 @@ namespace shaderbed::vulkan_test {
 inline Result<RenderOutput> draw(const CompiledProgram& program, const Mesh& mesh, const UniformResolver& uniforms,
                                  int width = 64, int height = 64, ShaderPath path = ShaderPath::spirv) {
   Backend* backend = shared_backend();
-  if (backend == nullptr) return fail("test", "no Vulkan backend");
+  if (backend == nullptr) return fail(ErrorStage::none, "test: no Vulkan backend");
   return backend->render(DrawJob{.program = program, .path = path, .mesh = mesh, .uniforms = uniforms,
                                  .width = width, .height = height});
 }
@@ -103,7 +103,7 @@ inline Result<RenderOutput> draw_textured(const CompiledProgram& program, const 
                                           const UniformResolver& uniforms, const TextureResolver* textures,
                                           int width, int height) {
   Backend* backend = shared_backend();
-  if (backend == nullptr) return fail("test", "no Vulkan backend");
+  if (backend == nullptr) return fail(ErrorStage::none, "test: no Vulkan backend");
   return backend->render(DrawJob{.program = program, .path = ShaderPath::spirv, .mesh = mesh, .uniforms = uniforms,
                                  .width = width, .height = height, .textures = textures});
 }

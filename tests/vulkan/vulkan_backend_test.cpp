@@ -25,7 +25,7 @@ TEST(VulkanBackend, OtherShaderPathsAreAnError) {
   const MapResolver no_uniforms;
   auto out = draw(*program, full_screen_quad(), no_uniforms, 8, 8, ShaderPath::native_glsl);
   ASSERT_FALSE(out);
-  EXPECT_EQ(out.error().stage, "vulkan");
+  EXPECT_EQ(out.error().stage, ErrorStage::vulkan);
   EXPECT_NE(out.error().message.find("SPIR-V"), std::string::npos) << out.error().to_string();
 }
 

@@ -69,7 +69,7 @@ TEST(VulkanBinding, MissingUniformIsAnErrorNamingIt) {
   const std::string text = out.error().to_string();
   EXPECT_NE(text.find("'gain'"), std::string::npos) << text;
   EXPECT_NE(text.find("'Material'"), std::string::npos) << text;
-  EXPECT_EQ(out.error().stage, "bind") << text;  // the resolver's stage is kept
+  EXPECT_EQ(out.error().stage, ErrorStage::bind) << text;  // the resolver's stage is kept
 }
 
 TEST(VulkanBinding, DifferentBlocksAtTheSameBindingAreAnError) {
@@ -94,7 +94,7 @@ void main() { gl_Position = vec4(position, 1.0) + offset; }
   ASSERT_FALSE(out);
   const std::string text = out.error().to_string();
   EXPECT_NE(text.find("'Transform' and 'Material'"), std::string::npos) << text;
-  EXPECT_EQ(out.error().stage, "vulkan") << text;
+  EXPECT_EQ(out.error().stage, ErrorStage::vulkan) << text;
 }
 
 TEST(VulkanBinding, VertexInputThatIsNoMeshStreamIsAnError) {

@@ -28,7 +28,7 @@ std::string gl_error_name(GLenum code) {
 Error gl_error(std::string message) {
   Error error;
   error.message = std::move(message);
-  error.stage = "gl";
+  error.stage = ErrorStage::gl;
   error.backend = "gl";
   return error;
 }

@@ -104,16 +104,16 @@ std::vector<ShaderPath> GlRenderer::paths(Language language) const { return back
 
 Result<RenderOutput> GlRenderer::render(const DrawJob& job) {
   if (job.path == ShaderPath::native_glsl && !job.program.native_glsl_skip_reason.empty())
-    return std::unexpected(Error(skip("gl", job.program.native_glsl_skip_reason).error()).in_backend("gl"));
+    return std::unexpected(Error(skip(ErrorStage::gl, job.program.native_glsl_skip_reason).error()).in_backend("gl"));
   if (job.path != ShaderPath::native_glsl && !job.program.opengl_skip_reason.empty())
-    return std::unexpected(Error(skip("gl", job.program.opengl_skip_reason).error()).in_backend("gl"));
+    return std::unexpected(Error(skip(ErrorStage::gl, job.program.opengl_skip_reason).error()).in_backend("gl"));
   if (job.path == ShaderPath::native_glsl && job.program.native_glsl_compatibility && !legacy_)
     return render_compatibility(job);
   auto output = render_on_path(job);
   if (output) return output;
   Error error = std::move(output.error());
   error.message = std::string(to_string(job.path)) + " path: " + error.message;
-  return std::unexpected(std::move(error).in_stage("gl").in_backend("gl"));
+  return std::unexpected(std::move(error).in_stage(ErrorStage::gl).in_backend("gl"));
 }
 
 Result<RenderOutput> GlRenderer::render_compatibility(const DrawJob& job) {
@@ -121,7 +121,7 @@ Result<RenderOutput> GlRenderer::render_compatibility(const DrawJob& job) {
     auto made = create_compatibility();
     // No compatibility context here: the path does not apply, it has not failed.
     if (!made)
-      return std::unexpected(Error(skip("gl", "GL-era GLSL needs a compatibility-profile context: " +
+      return std::unexpected(Error(skip(ErrorStage::gl, "GL-era GLSL needs a compatibility-profile context: " +
                                                   made.error().message)
                                        .error())
                                  .in_backend("gl"));

@@ -68,11 +68,11 @@ Result<OsMesaContext> OsMesaContext::create(int major, int minor, Profile profil
                             OSMESA_CONTEXT_MAJOR_VERSION, major,
                             OSMESA_CONTEXT_MINOR_VERSION, minor,
                             0};
-  if (!osmesa().error.empty()) return fail("gl", osmesa().error);
+  if (!osmesa().error.empty()) return fail(ErrorStage::gl, osmesa().error);
   auto handle = std::make_unique<Handle>();
   handle->context = osmesa().create_context_attribs(attributes, nullptr);
   if (!handle->context)
-    return fail("gl", "OSMesa cannot create a " + std::to_string(major) + "." + std::to_string(minor) +
+    return fail(ErrorStage::gl, "OSMesa cannot create a " + std::to_string(major) + "." + std::to_string(minor) +
                           (profile == Profile::core ? " core" : " compatibility") +
                           "-profile context (is libOSMesa from Mesa >= 11.2 with llvmpipe installed?)");
   OsMesaContext created(std::move(handle));
@@ -81,9 +81,9 @@ Result<OsMesaContext> OsMesaContext::create(int major, int minor, Profile profil
 }
 
 Result<void> OsMesaContext::make_current() const {
-  if (!handle_ || !handle_->context) return fail("gl", "the OSMesa context was moved from");
+  if (!handle_ || !handle_->context) return fail(ErrorStage::gl, "the OSMesa context was moved from");
   if (!osmesa().make_current(handle_->context, handle_->dummy_buffer.data(), GL_UNSIGNED_BYTE, 4, 4))
-    return fail("gl", "OSMesaMakeCurrent failed");
+    return fail(ErrorStage::gl, "OSMesaMakeCurrent failed");
   return {};
 }
 

@@ -46,7 +46,7 @@ std::string vk_result_name(VkResult result) {
 }
 
 Error vulkan_error(std::string_view call, VkResult result) {
-  return Error{.message = std::string(call) + " failed: " + vk_result_name(result), .stage = "vulkan"};
+  return Error{.message = std::string(call) + " failed: " + vk_result_name(result), .stage = ErrorStage::vulkan};
 }
 
 Result<void> check(VkResult result, std::string_view call) {
@@ -56,7 +56,7 @@ Result<void> check(VkResult result, std::string_view call) {
 }
 
 Error backend_error(std::string message) {
-  return Error{.message = std::move(message), .stage = "vulkan"};
+  return Error{.message = std::move(message), .stage = ErrorStage::vulkan};
 }
 
 }  // namespace shaderbed::vulkan

@@ -203,7 +203,7 @@ Result<std::vector<ResolvedTexture>> resolve_textures(const VulkanDevice& device
                                          " but the draw has no textures (DrawJob::textures is null)"));
   const auto with_context = [&](const SamplerBinding& sampler, Error e) {
     if (e.message.find("'" + sampler.name + "'") == std::string::npos) e.message = where(sampler) + ": " + e.message;
-    return std::unexpected(std::move(e).in_stage("vulkan"));
+    return std::unexpected(std::move(e).in_stage(ErrorStage::vulkan));
   };
   for (const SamplerBinding& sampler : samplers) {
     ResolvedTexture r{.sampler = sampler};

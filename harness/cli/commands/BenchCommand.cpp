@@ -92,7 +92,7 @@ Command add_bench_command(CLI::App& app) {
             if (!report) {
               fmt::print(stderr, "shaderbed: bench: {}\n", report.error().to_string());
               // A compared cell that could not be drawn is a failure, not bad input.
-              return report.error().stage == "bench" ? kExitFail : kExitBadInput;
+              return report.error().stage == ErrorStage::bench ? kExitFail : kExitBadInput;
             }
             fmt::print("{}", bench::bench_table(*report));
             if (!a.json.empty()) {

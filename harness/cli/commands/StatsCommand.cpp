@@ -59,7 +59,7 @@ Command add_stats_command(CLI::App& app) {
               return kExitBadInput;
             }
             const auto start = std::chrono::steady_clock::now();
-            Result<stats::StatsReport> report = fail("stats", "nothing");
+            Result<stats::StatsReport> report = fail(ErrorStage::stats, "nothing");
             if (!args->from.empty()) {
               report = stats::read_stats_json(args->from);
             } else {

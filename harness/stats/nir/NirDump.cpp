@@ -66,7 +66,7 @@ Result<NirProgramCounts> nir_counts(const CompiledProgram& program, const NirReq
     request.method = request.backend == NirBackend::vulkan ? NirMethod::gallium_trace : NirMethod::glsl_dump;
   const std::string what = std::string("counts unavailable: ") + to_string(request.method) + " on " +
                            (request.backend == NirBackend::vulkan ? "lavapipe" : "OSMesa llvmpipe");
-  auto unavailable = [&](const std::string& why) { return fail("nir", what + ": " + why); };
+  auto unavailable = [&](const std::string& why) { return fail(ErrorStage::nir, what + ": " + why); };
 
   if (request.backend == NirBackend::vulkan && request.method == NirMethod::glsl_dump)
     return unavailable("MESA_GLSL=dump is a GL (GLSL compiler) setting; Vulkan has no GLSL linker");
@@ -92,11 +92,11 @@ Result<NirProgramCounts> nir_counts(const CompiledProgram& program, const NirReq
                                          "--fragment", program.fragment.source_file,
                                          "--vertex-entry", program.vertex.entry_point,
                                          "--fragment-entry", program.fragment.entry_point};
-  auto exit = run_child(args, dir->path(), "nir", child_environment(request.method, trace));
+  auto exit = run_child(args, dir->path(), ErrorStage::nir, child_environment(request.method, trace));
   if (!exit) return unavailable("cannot run the helper '" + helper + "': " + exit.error().message);
   const std::string& stderr_text = exit->stderr_text;
   if (!exit->succeeded())
-    return fail("nir", "the NIR helper failed (" + exit->how() + "): " + tail(exit->stdout_text + stderr_text, 600));
+    return fail(ErrorStage::nir, "the NIR helper failed (" + exit->how() + "): " + tail(exit->stdout_text + stderr_text, 600));
 
   std::vector<NirShader> shaders;
   if (request.method == NirMethod::gallium_trace) {

@@ -168,7 +168,7 @@ Result<NirCounts> count_nir(std::string_view text) {
       ++c.alu;
     }
   }
-  if (!has_impl) return fail("nir", "no NIR function body (\"impl\") in the captured text");
+  if (!has_impl) return fail(ErrorStage::nir, "no NIR function body (\"impl\") in the captured text");
   c.control = c.ifs + c.loops + c.jumps;
   return c;
 }

@@ -86,7 +86,7 @@ int main(int argc, char** argv) {
 
   auto backend = opt["--backend"] == "vulkan" ? make_vulkan_backend()
                : opt["--backend"] == "gl"     ? make_gl_backend()
-                                              : Result<std::unique_ptr<Backend>>(fail("nir", "unknown --backend"));
+                                              : Result<std::unique_ptr<Backend>>(fail(ErrorStage::nir, "unknown --backend"));
   if (!backend) {
     std::fprintf(stderr, "%s\n", backend.error().to_string().c_str());
     return 1;
