@@ -1,4 +1,4 @@
-#include "run/PortCase.h"
+#include "author/PortCase.h"
 
 #include <algorithm>
 #include <filesystem>

@@ -1,4 +1,4 @@
-#include "scene/CaseDraft.h"
+#include "author/CaseDraft.h"
 
 #include <algorithm>
 #include <cctype>
