@@ -1,4 +1,4 @@
-// `shaderbed init SHADER...`: a first case file for your own shaders (scene/CaseDraft.h),
+// `shaderbed init SHADER...`: a first case file for your own shaders (author/CaseDraft.h),
 // then one run of it, and what still needs you.
 #include <unistd.h>
 
@@ -10,15 +10,15 @@
 
 #include <fmt/format.h>
 
+#include "author/CaseDraft.h"
+#include "author/ShaderSurvey.h"
 #include "cli/commands/Command.h"
-#include "core/ThisExecutable.h"
 #include "core/AtomicFile.h"
+#include "core/ThisExecutable.h"
 #include "core/WritablePath.h"
 #include "report/ConsoleProgress.h"
 #include "report/ConsoleReport.h"
 #include "run/Runner.h"
-#include "scene/CaseDraft.h"
-#include "scene/ShaderSurvey.h"
 
 namespace shaderbed {
 namespace {

@@ -5,13 +5,13 @@
 
 #include <fmt/format.h>
 
+#include "author/PortCase.h"
 #include "cli/commands/Command.h"
-#include "core/ThisExecutable.h"
 #include "cli/commands/ReportOutputs.h"
+#include "core/ThisExecutable.h"
 #include "core/WritablePath.h"
 #include "report/ConsoleProgress.h"
 #include "report/ConsoleReport.h"
-#include "run/PortCase.h"
 #include "run/Runner.h"
 
 namespace shaderbed {

@@ -1,4 +1,4 @@
-#include "scene/ShaderText.h"
+#include "author/ShaderText.h"
 
 #include <algorithm>
 #include <cctype>

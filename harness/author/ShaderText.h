@@ -9,8 +9,8 @@
 #include <string_view>
 #include <vector>
 
+#include "author/BindingGuess.h"
 #include "compile/ShaderModule.h"
-#include "scene/BindingGuess.h"
 
 namespace shaderbed {
 

@@ -1,14 +1,14 @@
-#include "run/PortCase.h"
+#include "author/PortCase.h"
 
 #include <algorithm>
 #include <filesystem>
 #include <map>
 #include <optional>
 #include <set>
-#include <sstream>
 
 #include <toml++/toml.h>
 
+#include "author/CaseToml.h"
 #include "backends/VertexInputs.h"
 #include "compile/Compiler.h"
 #include "compile/LegacyGlsl.h"
@@ -31,67 +31,12 @@ const char* target_description(PortTarget target) {
   return "?";
 }
 
-// --- TOML text: keys and values as a case file writes them ---
-
-std::string toml_text(const toml::node& node);
-
-std::string toml_key(const std::string& key) {
-  const bool bare = !key.empty() && std::ranges::all_of(key, [](unsigned char c) { return std::isalnum(c) || c == '_' || c == '-'; });
-  if (bare) return key;
-  return toml_text(toml::value<std::string>(key));
-}
-
-std::string toml_text(const toml::node& node) {
-  std::ostringstream os;
-  if (const toml::table* t = node.as_table()) {
-    os << "{ ";
-    bool first = true;
-    for (const auto& [k, v] : *t) {
-      os << (first ? "" : ", ") << toml_key(std::string(k.str())) << " = " << toml_text(v);
-      first = false;
-    }
-    os << (first ? "}" : " }");
-  } else if (const toml::array* a = node.as_array()) {
-    os << "[";
-    for (size_t i = 0; i < a->size(); ++i) os << (i ? ", " : "") << toml_text(*a->get(i));
-    os << "]";
-  } else {
-    // Double-quoted strings, as the case files are written.
-    os << toml::toml_formatter{node, toml::format_flags::allow_unicode_strings | toml::format_flags::relaxed_float_precision};
-  }
-  return os.str();
-}
-
-// An ordered list of "key = value" lines under one [section].
-struct Section {
-  std::string header;
-  std::vector<std::pair<std::string, std::string>> lines;
-  void add(const std::string& key, const std::string& value) {
-    for (auto& line : lines)
-      if (line.first == key) {
-        line.second = value;
-        return;
-      }
-    lines.emplace_back(key, value);
-  }
-  const std::string* find(const std::string& key) const {
-    for (const auto& line : lines)
-      if (line.first == key) return &line.second;
-    return nullptr;
-  }
-};
-
-Section section_of(const std::string& header, const toml::table* table) {
-  Section s{header, {}};
+// The parsed table's entries as a case writes them, under `header`.
+CaseTable table_of(const std::string& header, const toml::table* table) {
+  CaseTable t{header, {}};
   if (table)
-    for (const auto& [k, v] : *table) s.add(std::string(k.str()), toml_text(v));
-  return s;
-}
-
-void write_section(std::ostringstream& out, const Section& s) {
-  if (s.lines.empty()) return;
-  out << "\n[" << s.header << "]\n";
-  for (const auto& [k, v] : s.lines) out << toml_key(k) << " = " << v << "\n";
+    for (const auto& [k, v] : *table) t.set(std::string(k.str()), toml_value(v));
+  return t;
 }
 
 // Relative to the new case's folder when the two share more than the filesystem root
@@ -107,7 +52,7 @@ std::string relative_path(const fs::path& file, const fs::path& root) {
 // A [textures] entry with its files re-rooted at the new case's folder.
 std::string texture_entry(const toml::node& entry, const fs::path& old_root, const fs::path& new_root) {
   const toml::table* t = entry.as_table();
-  if (!t) return toml_text(entry);
+  if (!t) return toml_value(entry);
   toml::table copy = *t;
   if (const toml::node* file = t->get("file")) {
     if (auto s = file->value<std::string>()) {
@@ -118,7 +63,7 @@ std::string texture_entry(const toml::node& entry, const fs::path& old_root, con
       copy.insert_or_assign("file", std::move(moved));
     }
   }
-  return toml_text(copy);
+  return toml_value(copy);
 }
 
 // A matrix binding with the other register convention (`layout`), same quantity.
@@ -127,7 +72,7 @@ std::string flipped_layout(const toml::node& binding, std::string& layout) {
   const toml::node* value = b ? b->get("value") : &binding;
   const bool row_vector = b && b->get("layout") && b->get("layout")->value_or(std::string()) == "row_vector";
   layout = row_vector ? "column_vector" : "row_vector";
-  return "{ value = " + (value ? toml_text(*value) : std::string("\"\"")) + ", layout = \"" + layout + "\" }";
+  return toml_inline_table({{"value", value ? toml_value(*value) : toml_string("")}, {"layout", toml_string(layout)}});
 }
 
 const char* semantic_of(VertexAttribute a) {
@@ -218,8 +163,8 @@ Result<PortPlan> plan_port(const PortOptions& options) {
   plan.out_dir = out_dir.string();
   std::map<std::string, std::vector<std::string>> change_variants;   // "kind: message" -> variants
   std::vector<std::string> change_order;
-  Section port_bindings{"bindings." + to_name, {}};
-  Section port_attributes{"attributes." + to_name, {}};
+  CaseTable port_bindings{"bindings." + to_name, {}};
+  CaseTable port_attributes{"attributes." + to_name, {}};
   std::map<std::string, std::string> port_textures;   // port sampler -> entry text
   std::vector<PortedVariant> ported;
   std::map<std::string, std::string> shader_texts;    // file -> text, so variants sharing a file write it once
@@ -304,7 +249,7 @@ Result<PortPlan> plan_port(const PortOptions& options) {
           if (!node)
             if (auto quantity = legacy_glsl_default_binding(member.name)) node = &legacy.emplace(*quantity);
           if (!node) continue;   // the original's case leaves it unbound: the run says so for both
-          std::string value = toml_text(*node);
+          std::string value = toml_value(*node);
           const UniformMember* port_member = member_named(*port_reflection, port_name);
           if (member.columns > 1 && port_member && port_member->column_registers != member.column_registers) {
             std::string layout;
@@ -315,13 +260,13 @@ Result<PortPlan> plan_port(const PortOptions& options) {
           }
           if (key != port_name)
             port->changes.push_back({"bindings", "'" + key + "' is bound as '" + port_name + "' in the port's case"});
-          port_bindings.add(port_name, value);
+          port_bindings.set(port_name, value);
         }
       for (const SamplerBinding& s : stage_reflection->samplers) {
         auto renamed = stage_port->sampler_names.find(s.name);
         if (renamed == stage_port->sampler_names.end()) continue;
         if (const toml::node* node = raw_bindings ? raw_bindings->get(s.name) : nullptr)
-          port_bindings.add(renamed->second, toml_text(*node));
+          port_bindings.set(renamed->second, toml_value(*node));
         // The texture's entry, with the sampler state it was sampled with folded in.
         toml::table entry;
         if (auto folded = stage_port->folded_sampler_states.find(renamed->second); folded != stage_port->folded_sampler_states.end())
@@ -337,7 +282,7 @@ Result<PortPlan> plan_port(const PortOptions& options) {
     if (to == Language::glsl)
       for (const auto& [location, name] : port->vertex.input_names)
         if (auto a = placed.find(location); a != placed.end())
-          port_attributes.add(name, toml_text(toml::value<std::string>(word_of(a->second))));
+          port_attributes.set(name, toml_string(word_of(a->second)));
 
     for (const PortChange& change : port->changes) {
       const std::string line = change.kind + ": " + change.message;
@@ -357,82 +302,82 @@ Result<PortPlan> plan_port(const PortOptions& options) {
   // variant (the reference names the original's variant).
   const auto write_case = [&](const std::vector<const PortedVariant*>& variants, const fs::path& file) -> Result<void> {
     const fs::path new_root = shader_root_of(file.string());
-    std::ostringstream out;
-    out << "# Port of " << relative_path(case_path, new_root) << " (" << from_name << ") to "
-        << target_description(options.target) << " made by SPIRV-Cross (shaderbed port): verified against the original.\n";
+    CaseTomlWriter w;
+    w.line("# Port of " + relative_path(case_path, new_root) + " (" + from_name + ") to " +
+           target_description(options.target) + " made by SPIRV-Cross (shaderbed port): verified against the original.");
     std::string description = "The " + std::string(target_description(options.target)) + " port of " + stem +
                               ", judged against the original's " + from_name + " render.";
     if (!original.description.empty()) description += " The original: " + original.description;
-    out << "description = " << toml_text(toml::value<std::string>(description)) << "\n";
+    w.line(toml_entry("description", toml_string(description)));
     toml::table reference;
     reference.insert_or_assign("language", from_name);
     reference.insert_or_assign("backend", "vulkan");
     reference.insert_or_assign("path", "spirv");
     if (same_language) reference.insert_or_assign("variant", variants.front()->name);
-    out << "reference = " << toml_text(reference) << "\n";
+    w.line(toml_entry("reference", toml_value(reference)));
     for (const char* key : {"light", "ambient", "tessellation"})
-      if (const toml::node* n = raw.get(key)) out << key << " = " << toml_text(*n) << "\n";
-    write_section(out, section_of("params", raw["params"].as_table()));
+      if (const toml::node* n = raw.get(key)) w.line(toml_entry(key, toml_value(*n)));
+    w.table(table_of("params", raw["params"].as_table()));
 
     for (const PortedVariant* pv : variants) {
       const toml::table* raw_variant = raw["variants"][pv->name].as_table();
       const Variant& v = *std::ranges::find(original.variants, pv->name, &Variant::name);
       const ShaderFiles& files = v.shaders.at(*from);
-      Section original_section{"variants." + pv->name, {}};
-      Section port_section{"variants." + pv->name + (same_language ? "_port" : ""), {}};
+      CaseTable original_section{"variants." + pv->name, {}};
+      CaseTable port_section{"variants." + pv->name + (same_language ? "_port" : ""), {}};
       for (const char* key : {"mode", "lut"})
         if (const toml::node* n = raw_variant ? raw_variant->get(key) : nullptr) {
-          original_section.add(key, toml_text(*n));
-          port_section.add(key, toml_text(*n));
+          original_section.set(key, toml_value(*n));
+          port_section.set(key, toml_value(*n));
         }
-      std::string shaders = "{ vertex = " + toml_text(toml::value<std::string>(relative_path(files.vertex, new_root))) +
-                            ", fragment = " + toml_text(toml::value<std::string>(relative_path(files.fragment, new_root)));
+      TomlEntries shaders = {{"vertex", toml_string(relative_path(files.vertex, new_root))},
+                             {"fragment", toml_string(relative_path(files.fragment, new_root))}};
       if (const toml::table* t = raw_variant ? raw_variant->get_as<toml::table>(from_name) : nullptr)
         for (const auto& [k, val] : *t)
-          if (k.str() != "vertex" && k.str() != "fragment") shaders += ", " + toml_key(std::string(k.str())) + " = " + toml_text(val);
-      original_section.add(from_name, shaders + " }");
-      port_section.add(to_name, "{ vertex = " + toml_text(toml::value<std::string>(relative_path(pv->vertex_file, new_root))) +
-                                    ", fragment = " + toml_text(toml::value<std::string>(relative_path(pv->fragment_file, new_root))) + " }");
+          if (k.str() != "vertex" && k.str() != "fragment") shaders.emplace_back(std::string(k.str()), toml_value(val));
+      original_section.set(from_name, toml_inline_table(shaders));
+      port_section.set(to_name, toml_inline_table({{"vertex", toml_string(relative_path(pv->vertex_file, new_root))},
+                                                   {"fragment", toml_string(relative_path(pv->fragment_file, new_root))}}));
       if (same_language) {
-        write_section(out, original_section);
-        write_section(out, port_section);
+        w.table(original_section);
+        w.table(port_section);
       } else {
-        original_section.add(to_name, *port_section.find(to_name));
-        write_section(out, original_section);
+        original_section.set(to_name, *port_section.find(to_name));
+        w.table(original_section);
       }
     }
 
-    Section original_bindings = section_of("bindings." + from_name, raw_bindings);
-    Section original_attributes = section_of("attributes." + from_name, raw["attributes"][from_name].as_table());
+    CaseTable original_bindings = table_of("bindings." + from_name, raw_bindings);
+    CaseTable original_attributes = table_of("attributes." + from_name, raw["attributes"][from_name].as_table());
     if (same_language) {
       // One table for both: the port's entries must agree with the original's.
       for (auto [shared, port] : {std::pair{&original_bindings, &port_bindings}, std::pair{&original_attributes, &port_attributes}})
-        for (const auto& [k, v] : port->lines) {
+        for (const auto& [k, v] : port->entries) {
           if (const std::string* existing = shared->find(k); existing && *existing != v)
             return std::unexpected(Error{.message = "the port's '" + k + "' needs " + v + " but the original's case binds it to " +
                                                     *existing + " in the same [" + shared->header + "]; use --to for another language",
                                          .file = case_path.string(), .stage = ErrorStage::port});
-          shared->add(k, v);
+          shared->set(k, v);
         }
-      write_section(out, original_bindings);
-      write_section(out, original_attributes);
+      w.table(original_bindings);
+      w.table(original_attributes);
     } else {
-      write_section(out, original_bindings);
-      write_section(out, port_bindings);
-      write_section(out, original_attributes);
-      write_section(out, port_attributes);
+      w.table(original_bindings);
+      w.table(port_bindings);
+      w.table(original_attributes);
+      w.table(port_attributes);
     }
     // Textures: each language's own entries (the port's samplers may be named and paired
     // differently), files re-rooted at the new case's folder.
-    Section original_section{"textures" + std::string(same_language ? "" : "." + from_name), {}};
-    for (const auto& [name, node] : original_textures) original_section.add(name, texture_entry(*node, old_root, new_root));
-    write_section(out, original_section);
+    CaseTable original_section{"textures" + std::string(same_language ? "" : "." + from_name), {}};
+    for (const auto& [name, node] : original_textures) original_section.set(name, texture_entry(*node, old_root, new_root));
+    w.table(original_section);
     if (!same_language) {
-      Section port_section{"textures." + to_name, {}};
-      for (const auto& [name, text] : port_textures) port_section.add(name, text);
-      write_section(out, port_section);
+      CaseTable port_section{"textures." + to_name, {}};
+      for (const auto& [name, text] : port_textures) port_section.set(name, text);
+      w.table(port_section);
     }
-    plan.files.push_back({file.string(), out.str()});
+    plan.files.push_back({file.string(), w.text()});
     plan.case_paths.push_back(file.string());
     return {};
   };

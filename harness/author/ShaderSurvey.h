@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
+#include "author/BindingGuess.h"
 #include "compile/ShaderModule.h"
 #include "core/Error.h"
-#include "scene/BindingGuess.h"
 #include "scene/CaseFile.h"
 
 namespace shaderbed {

@@ -3,8 +3,8 @@
 // names it must leave to the user (a TODO with a placeholder of the right size).
 #include <gtest/gtest.h>
 
-#include "scene/BindingGuess.h"
-#include "scene/ShaderText.h"
+#include "author/BindingGuess.h"
+#include "author/ShaderText.h"
 
 namespace shaderbed {
 namespace {

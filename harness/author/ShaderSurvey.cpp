@@ -1,14 +1,14 @@
-#include "scene/ShaderSurvey.h"
+#include "author/ShaderSurvey.h"
 
 #include <algorithm>
 #include <filesystem>
 #include <map>
 #include <set>
 
+#include "author/ShaderText.h"
 #include "compile/Compiler.h"
 #include "compile/EffectFile.h"
 #include "scene/CaseProgram.h"
-#include "scene/ShaderText.h"
 
 namespace shaderbed {
 namespace {

@@ -1,4 +1,4 @@
-#include "scene/BindingGuess.h"
+#include "author/BindingGuess.h"
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,4 @@
-#include "scene/CaseDraft.h"
+#include "author/CaseDraft.h"
 
 #include <algorithm>
 #include <cctype>
@@ -6,42 +6,19 @@
 #include <map>
 #include <set>
 
-#include <fmt/format.h>
+#include "author/CaseToml.h"
 
 namespace shaderbed {
 namespace {
 
 namespace fs = std::filesystem;
 
-constexpr size_t kCommentColumn = 44;   // where the reasons line up
-
-std::string toml_string(std::string_view s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
-  }
-  return out + "\"";
-}
-
-std::string toml_key(std::string_view key) {
-  const bool bare = !key.empty() && std::all_of(key.begin(), key.end(), [](unsigned char c) {
-    return std::isalnum(c) || c == '_' || c == '-';
-  });
-  return bare ? std::string(key) : toml_string(key);
-}
-
-std::string number(double v) {
-  std::string s = fmt::format("{}", v);
-  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
-  return s;
-}
-
-std::string number_list(const std::vector<double>& values) {
-  if (values.size() == 1) return number(values[0]);
-  std::string s = "[";
-  for (size_t i = 0; i < values.size(); ++i) s += (i ? ", " : "") + number(values[i]);
-  return s + "]";
+// One value or a list: what a binding or parameter of so many components is written as.
+std::string float_list(const std::vector<double>& values) {
+  if (values.size() == 1) return toml_float(values[0]);
+  toml::array list;
+  for (double v : values) list.push_back(v);
+  return toml_value(list);
 }
 
 std::string binding_value(const UniformGuess& g) {
@@ -49,20 +26,17 @@ std::string binding_value(const UniformGuess& g) {
   if (g.sources.size() == 1 && !g.sources[0].name.empty()) {
     value = toml_string(g.sources[0].name);
   } else if (g.sources.size() == 1) {
-    value = number_list(g.sources[0].literal);
+    value = float_list(g.sources[0].literal);
   } else {
-    value = "[";
-    for (size_t i = 0; i < g.sources.size(); ++i) {
-      value += i ? ", " : "";
-      if (!g.sources[i].name.empty()) {
-        value += toml_string(g.sources[i].name);
-      } else {
-        for (size_t k = 0; k < g.sources[i].literal.size(); ++k) value += (k ? ", " : "") + number(g.sources[i].literal[k]);
-      }
+    // Several sources are one flat list: ["diffuse", 1.0] is a colour with alpha 1.
+    toml::array list;
+    for (const BindingSource& source : g.sources) {
+      if (!source.name.empty()) list.push_back(source.name);
+      for (double v : source.literal) list.push_back(v);
     }
-    value += "]";
+    value = toml_value(list);
   }
-  if (g.layout == MatrixLayout::row_vector) value = "{ value = " + value + ", layout = \"row_vector\" }";
+  if (g.layout == MatrixLayout::row_vector) value = toml_inline_table({{"value", value}, {"layout", toml_string("row_vector")}});
   return value;
 }
 
@@ -72,31 +46,6 @@ std::string simplified(std::string s) {
     if (std::isalnum(static_cast<unsigned char>(c))) out += char(std::tolower(static_cast<unsigned char>(c)));
   return out;
 }
-
-// Lines of the case, with the TODOs' line numbers.
-class Writer {
- public:
-  void line(const std::string& text = "") { text_ += text + "\n", ++lines_; }
-  void commented(const std::string& code, const std::string& comment) {
-    std::string s = code;
-    if (!comment.empty()) {
-      s.resize(std::max(s.size() + 1, kCommentColumn), ' ');
-      s += "# " + comment;
-    }
-    line(s);
-  }
-  void todo(const std::string& code, const std::string& what) {
-    todos_.push_back("line " + std::to_string(lines_ + 1) + ": " + what);
-    commented(code, "TODO: " + what);
-  }
-  std::string text() const { return text_; }
-  std::vector<std::string> todos() const { return todos_; }
-
- private:
-  std::string text_;
-  int lines_ = 0;
-  std::vector<std::string> todos_;
-};
 
 struct LanguageGuesses {
   const SurveyedLanguage* survey;
@@ -139,7 +88,7 @@ std::vector<std::string> images_in(const std::string& folder) {
 CaseDraft draft_case(const std::vector<SurveyedLanguage>& languages, const std::string& case_path,
                      const std::vector<std::string>& images) {
   const fs::path root = shader_root_of(fs::absolute(case_path).lexically_normal().string());
-  Writer w;
+  CaseTomlWriter w;
   if (languages.empty()) return {};
 
   // Guess everything first: the parameters and the ambient colour go above the bindings.
@@ -182,55 +131,53 @@ CaseDraft draft_case(const std::vector<SurveyedLanguage>& languages, const std::
     description += " against its port" + std::string(languages.size() > 2 ? "s" : "") + " in";
     for (size_t i = 1; i < languages.size(); ++i) description += std::string(i > 1 ? "," : "") + " " + to_string(languages[i].language);
   }
-  w.line("description = " + toml_string(description));
-  w.line("reference = { language = " + toml_string(to_string(original.language)) + ", backend = \"vulkan\", path = \"spirv\" }");
+  w.line(toml_entry("description", toml_string(description)));
+  w.line(toml_entry("reference", toml_inline_table({{"language", toml_string(to_string(original.language))},
+                                                    {"backend", toml_string("vulkan")},
+                                                    {"path", toml_string("spirv")}})));
   if (uses_ambient)
-    w.commented("ambient = [0.1, 0.1, 0.1]", "the scene's ambient light colour, what ambient_light binds");
+    w.commented(toml_entry("ambient", float_list({0.1, 0.1, 0.1})), "the scene's ambient light colour, what ambient_light binds");
 
   if (!parameters.empty()) {
-    w.line();
-    w.line("[params]");
+    w.header("params");
     for (const auto& [name, entry] : parameters) {
       std::string users;
       for (const std::string& u : entry.second) users += (users.empty() ? "'" : ", '") + u + "'";
-      w.commented(toml_key(name) + " = " + number_list(entry.first.value), entry.first.reason + " (for " + users + ")");
+      w.commented(toml_entry(name, float_list(entry.first.value)), entry.first.reason + " (for " + users + ")");
     }
   }
 
-  w.line();
-  w.line("[variants.pixel]");
+  w.header("variants.pixel");
   for (const SurveyedLanguage& s : languages) {
-    std::string files = toml_key(to_string(s.language)) + " = { vertex = " + toml_string(relative_to(root, s.files.vertex)) +
-                        ", fragment = " + toml_string(relative_to(root, s.files.fragment));
+    TomlEntries files = {{"vertex", toml_string(relative_to(root, s.files.vertex))},
+                         {"fragment", toml_string(relative_to(root, s.files.fragment))}};
     if (!s.files.technique.empty()) {
-      files += ", technique = " + toml_string(s.files.technique);
-      if (!s.files.pass.empty()) files += ", pass = " + toml_string(s.files.pass);
+      files.emplace_back("technique", toml_string(s.files.technique));
+      if (!s.files.pass.empty()) files.emplace_back("pass", toml_string(s.files.pass));
     } else if (s.language != Language::glsl) {
-      files += ", vertex_entry = " + toml_string(s.files.vertex_entry) + ", fragment_entry = " + toml_string(s.files.fragment_entry);
+      files.emplace_back("vertex_entry", toml_string(s.files.vertex_entry));
+      files.emplace_back("fragment_entry", toml_string(s.files.fragment_entry));
     }
     std::string note;
     for (const std::string& n : s.notes) note += (note.empty() ? "" : "; ") + n;
-    w.commented(files + " }", note);
+    w.commented(toml_entry(to_string(s.language), toml_inline_table(files)), note);
   }
 
   for (const LanguageGuesses& lg : guesses) {
     const SurveyedLanguage& s = *lg.survey;
-    const std::string table = std::string("[bindings.") + to_string(s.language) + "]";
+    const std::string table = std::string("bindings.") + to_string(s.language);
     if (!s.compile_error.empty()) {
-      w.line();
-      w.line(table);
+      w.header(table);
       w.todo("", "make " + std::string(to_string(s.language)) + " compile, then bind its uniforms here (or run init again "
                  "with --force): " + s.compile_error);
       continue;
     }
     if (lg.uniforms.empty()) continue;
-    w.line();
-    w.line(table);
+    w.header(table);
     for (const auto& [u, g] : lg.uniforms) {
-      const std::string key = toml_key(u->name);
-      if (g.bound_by_default) w.commented("# " + key, g.reason);
-      else if (g.todo()) w.todo("# " + key + " = " + number_list(g.placeholder), g.reason + ", under " + table);
-      else w.commented(key + " = " + binding_value(g), g.reason);
+      if (g.bound_by_default) w.commented("# " + toml_key(u->name), g.reason);
+      else if (g.todo()) w.todo("# " + toml_entry(u->name, float_list(g.placeholder)), g.reason + ", under [" + table + "]");
+      else w.commented(toml_entry(u->name, binding_value(g)), g.reason);
     }
   }
 
@@ -242,15 +189,14 @@ CaseDraft draft_case(const std::vector<SurveyedLanguage>& languages, const std::
       if (s.language != Language::glsl && !input.semantic.empty()) continue;
       if (input.name.starts_with("gl_")) continue;
       if (auto a = guess_attribute(input.name))
-        mapped.push_back({toml_key(input.name) + " = " + toml_string(a->attribute), a->reason});
+        mapped.push_back({toml_entry(input.name, toml_string(a->attribute)), a->reason});
       else
-        unmapped.push_back({"# " + toml_key(input.name) + " = \"position\"",
+        unmapped.push_back({"# " + toml_entry(input.name, toml_string("position")),
                             "map vertex input '" + input.name + "' (location " + std::to_string(input.location) +
                                 ") to position, normal, tangent, texcoord or color"});
     }
     if (mapped.empty() && unmapped.empty()) continue;
-    w.line();
-    w.line(std::string("[attributes.") + to_string(s.language) + "]");
+    w.header(std::string("attributes.") + to_string(s.language));
     for (const auto& [code, why] : mapped) w.commented(code, why);
     for (const auto& [code, why] : unmapped) w.todo(code, why);
   }
@@ -271,24 +217,25 @@ CaseDraft draft_case(const std::vector<SurveyedLanguage>& languages, const std::
   for (size_t i = 0; i < textures.size(); ++i) {
     if (common && i > 0) break;
     const auto& [language, samplers] = textures[i];
-    w.line();
-    w.line(common ? "[textures]" : std::string("[textures.") + to_string(language) + "]");
+    w.header(common ? "textures" : std::string("textures.") + to_string(language));
     for (const SamplerBinding& b : samplers) {
-      const std::string key = toml_key(b.name);
       if (b.kind == SamplerKind::sampler) {
-        w.commented(key + " = { filter = \"linear\", address = \"wrap\" }", "a guess: a sampler state's usual settings");
+        w.commented(toml_entry(b.name, toml_inline_table({{"filter", toml_string("linear")}, {"address", toml_string("wrap")}})),
+                    "a guess: a sampler state's usual settings");
         continue;
       }
       if (b.cube) {
-        w.todo("# " + key + " = { file = [\"+x.png\", \"-x.png\", \"+y.png\", \"-y.png\", \"+z.png\", \"-z.png\"] }",
+        const toml::array faces{"+x.png", "-x.png", "+y.png", "-y.png", "+z.png", "-z.png"};
+        w.todo("# " + toml_entry(b.name, toml_inline_table({{"file", toml_value(faces)}})),
                "bind cube map '" + b.name + "' to six image files (+X, -X, +Y, -Y, +Z, -Z)");
         continue;
       }
       const auto [image, why] = image_for(b.name, images);
       if (image.empty())
-        w.todo("# " + key + " = { file = \"FILE.png\" }", "bind texture '" + b.name + "' to an image file");
+        w.todo("# " + toml_entry(b.name, toml_inline_table({{"file", toml_string("FILE.png")}})),
+               "bind texture '" + b.name + "' to an image file");
       else
-        w.commented(key + " = { file = " + toml_string(relative_to(root, image)) + " }", why);
+        w.commented(toml_entry(b.name, toml_inline_table({{"file", toml_string(relative_to(root, image))}})), why);
     }
   }
 

@@ -1,7 +1,7 @@
 #pragma once
 // The case file `shaderbed init` writes: a differential case (no model: the first
 // language's Vulkan SPIR-V render is the reference), one `pixel` variant holding each
-// language's files and entries, every uniform bound with a guess (scene/BindingGuess.h)
+// language's files and entries, every uniform bound with a guess (author/BindingGuess.h)
 // and a comment saying why, GLSL vertex inputs mapped by name, textures bound to the image
 // next to the shader when one is the obvious choice. What it cannot guess is a TODO
 // written so the file still loads: a commented-out binding with a placeholder, and a
@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/ShaderSurvey.h"
+#include "author/ShaderSurvey.h"
 
 namespace shaderbed {
 
