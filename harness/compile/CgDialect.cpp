@@ -8,6 +8,7 @@
 
 #include "compile/CgTokens.h"
 #include "core/AsciiCase.h"
+#include "pipeline/SpirvWords.h"
 
 namespace shaderbed {
 namespace {
@@ -445,27 +446,13 @@ int cg_target_location(std::string_view semantic) {
   return -1;
 }
 
-constexpr uint32_t kOpName = 5, kOpTypeMatrix = 24, kOpTypeArray = 28, kOpTypeStruct = 30, kOpTypePointer = 32,
-                   kOpConstant = 43, kOpVariable = 59, kOpDecorate = 71, kOpDecorateString = 5632;
-constexpr uint32_t kDecorationBuiltIn = 11, kDecorationLocation = 30, kDecorationUserSemantic = 5635;
-constexpr uint32_t kStorageInput = 1, kStorageOutput = 3;
-
-std::string spirv_string(const uint32_t* words, std::size_t count) {
-  std::string s;
-  for (std::size_t w = 0; w < count; ++w)
-    for (int b = 0; b < 4; ++b) {
-      const char c = static_cast<char>((words[w] >> (8 * b)) & 0xff);
-      if (c == 0) return s;
-      s += c;
-    }
-  return s;
-}
-
 }  // namespace
 
 Result<void> assign_cg_varying_locations(std::vector<uint32_t>& spirv, Stage stage, const CgTranslation& translation,
                                          const std::string& path) {
-  if (spirv.size() < 5) return {};
+  if (spirv.size() < kSpirvHeaderWords) return {};
+  constexpr uint32_t kStorageInput = std::to_underlying(spv::StorageClass::Input);
+  constexpr uint32_t kStorageOutput = std::to_underlying(spv::StorageClass::Output);
   struct Variable {
     uint32_t storage = 0;
     uint32_t pointer_type = 0;
@@ -484,43 +471,44 @@ Result<void> assign_cg_varying_locations(std::vector<uint32_t>& spirv, Stage sta
   std::map<uint32_t, std::size_t> location_words;
   std::map<uint32_t, bool> builtins;
 
-  for (std::size_t i = 5; i < spirv.size();) {
-    const uint32_t count = spirv[i] >> 16, op = spirv[i] & 0xffff;
-    if (count == 0 || i + count > spirv.size()) break;
-    const uint32_t* w = &spirv[i];
-    switch (op) {
-      case kOpName:
-        names[w[1]] = spirv_string(w + 2, count - 2);
+  // An instruction too short for the operands read (only a malformed module has one) is skipped.
+  for (const SpirvInstruction in : SpirvInstructions(spirv)) {
+    const std::span<const uint32_t> w = in.words;
+    switch (in.opcode) {
+      case spv::Op::OpName:
+        if (w.size() >= 2) names[w[1]] = spirv_literal_string(w.subspan(2));
         break;
-      case kOpTypePointer:
-        pointee[w[1]] = w[3];
+      case spv::Op::OpTypePointer:
+        if (w.size() >= 4) pointee[w[1]] = w[3];
         break;
-      case kOpTypeArray:
-        arrays[w[1]] = {w[2], w[3]};
+      case spv::Op::OpTypeArray:
+        if (w.size() >= 4) arrays[w[1]] = {w[2], w[3]};
         break;
-      case kOpTypeMatrix:
-        matrices[w[1]] = {w[2], w[3]};
+      case spv::Op::OpTypeMatrix:
+        if (w.size() >= 4) matrices[w[1]] = {w[2], w[3]};
         break;
-      case kOpTypeStruct:
-        structs[w[1]] = std::vector<uint32_t>(w + 2, w + count);
+      case spv::Op::OpTypeStruct:
+        if (w.size() >= 2) structs[w[1]] = std::vector<uint32_t>(w.begin() + 2, w.end());
         break;
-      case kOpConstant:
-        if (count >= 4) constants[w[2]] = w[3];
+      case spv::Op::OpConstant:
+        if (w.size() >= 4) constants[w[2]] = w[3];
         break;
-      case kOpVariable:
-        if (w[3] == kStorageInput || w[3] == kStorageOutput) vars[w[2]] = {.storage = w[3], .pointer_type = w[1]};
+      case spv::Op::OpVariable:
+        if (w.size() >= 4 && (w[3] == kStorageInput || w[3] == kStorageOutput))
+          vars[w[2]] = {.storage = w[3], .pointer_type = w[1]};
         break;
-      case kOpDecorate:
-        if (w[2] == kDecorationLocation && count >= 4) location_words[w[1]] = i + 3;
-        if (w[2] == kDecorationBuiltIn) builtins[w[1]] = true;
+      case spv::Op::OpDecorate:
+        if (w.size() >= 4 && w[2] == std::to_underlying(spv::Decoration::Location))
+          location_words[w[1]] = in.offset + 3;
+        if (w.size() >= 3 && w[2] == std::to_underlying(spv::Decoration::BuiltIn)) builtins[w[1]] = true;
         break;
-      case kOpDecorateString:
-        if (w[2] == kDecorationUserSemantic) semantics[w[1]] = spirv_string(w + 3, count - 3);
+      case spv::Op::OpDecorateString:
+        if (w.size() >= 3 && w[2] == std::to_underlying(spv::Decoration::UserSemantic))
+          semantics[w[1]] = spirv_literal_string(w.subspan(3));
         break;
       default:
         break;
     }
-    i += count;
   }
 
   // Locations a type occupies (32-bit components: one per vector, per matrix column).

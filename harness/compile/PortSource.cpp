@@ -8,10 +8,10 @@
 #include <spirv_cross/spirv_glsl.hpp>
 #include <spirv_cross/spirv_hlsl.hpp>
 
+#include "compile/RelaxedPrecision.h"
+
 namespace shaderbed {
 namespace {
-
-constexpr uint32_t kOpDecorate = 71, kOpMemberDecorate = 72, kDecorationRelaxedPrecision = 0;
 
 // SPIRV-Cross always names a block's variable: the port gives it a marker and removes the
 // marker from the text afterwards, so the original's member names read as plain names.
@@ -160,18 +160,6 @@ NamePlan plan_names(const CompiledProgram& program) {
     plan.fragment[out.id] = claim(base, "out_", loc);
   }
   return plan;
-}
-
-size_t relaxed_precision_decorations(const std::vector<uint32_t>& spirv) {
-  size_t count = 0;
-  for (size_t i = 5; i < spirv.size();) {
-    const uint32_t words = spirv[i] >> 16, op = spirv[i] & 0xffff;
-    if (words == 0) break;
-    if (op == kOpDecorate && words >= 3 && spirv[i + 2] == kDecorationRelaxedPrecision) ++count;
-    if (op == kOpMemberDecorate && words >= 4 && spirv[i + 3] == kDecorationRelaxedPrecision) ++count;
-    i += words;
-  }
-  return count;
 }
 
 // GLSL 330 has neither layout(binding) nor layout(offset): each block becomes plain

@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "pipeline/SpirvWords.h"
+
 namespace shaderbed {
 namespace {
 
@@ -41,6 +43,18 @@ Result<ShaderSource> relax_precision(Language language, ShaderSource source) {
   }
   source.text = relaxed_type_defines(language == Language::hlsl) + "#line 1\n" + source.text;
   return source;
+}
+
+// Here and not beside its caller in PortSource.cpp: that file includes SPIRV-Cross, whose
+// spirv.hpp cannot share a translation unit with SpirvWords.h's spirv.hpp11.
+size_t relaxed_precision_decorations(std::span<const uint32_t> spirv) {
+  const uint32_t relaxed = std::to_underlying(spv::Decoration::RelaxedPrecision);
+  size_t count = 0;
+  for (const SpirvInstruction in : SpirvInstructions(spirv)) {
+    if (in.opcode == spv::Op::OpDecorate && in.words.size() >= 3 && in.words[2] == relaxed) ++count;
+    if (in.opcode == spv::Op::OpMemberDecorate && in.words.size() >= 4 && in.words[3] == relaxed) ++count;
+  }
+  return count;
 }
 
 }  // namespace shaderbed

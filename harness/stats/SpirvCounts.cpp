@@ -1,13 +1,12 @@
 #include "stats/SpirvCounts.h"
 
 #include <spirv-tools/libspirv.h>
+#include <spirv/unified1/spirv.hpp11>
 
 #include "stats/OpcodeClass.h"
 
 namespace shaderbed::stats {
 namespace {
-
-constexpr uint16_t kOpFunction = 54, kOpFunctionEnd = 56, kOpExtInst = 12;
 
 struct ParseState {
   ClassCounts counts;
@@ -16,11 +15,12 @@ struct ParseState {
 
 spv_result_t on_instruction(void* user, const spv_parsed_instruction_t* inst) {
   auto& s = *static_cast<ParseState*>(user);
-  if (inst->opcode == kOpFunction) {
+  const auto opcode = spv::Op(inst->opcode);
+  if (opcode == spv::Op::OpFunction) {
     s.in_function = true;
     return SPV_SUCCESS;
   }
-  if (inst->opcode == kOpFunctionEnd) {
+  if (opcode == spv::Op::OpFunctionEnd) {
     s.in_function = false;
     return SPV_SUCCESS;
   }
@@ -35,7 +35,7 @@ spv_result_t on_instruction(void* user, const spv_parsed_instruction_t* inst) {
     case InstructionClass::conversion: ++c.conversion; break;
     case InstructionClass::other: ++c.other; break;
     case InstructionClass::extended:
-      if (inst->opcode == kOpExtInst && inst->ext_inst_type == SPV_EXT_INST_TYPE_GLSL_STD_450 &&
+      if (opcode == spv::Op::OpExtInst && inst->ext_inst_type == SPV_EXT_INST_TYPE_GLSL_STD_450 &&
           inst->num_words > 4) {
         ++c.extended;
         std::string name = glsl_std_450_name(inst->words[4]);

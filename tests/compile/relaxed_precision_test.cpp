@@ -5,19 +5,18 @@
 
 #include "compile/Compiler.h"
 #include "compile/RelaxedPrecision.h"
+#include "pipeline/SpirvWords.h"
 
 namespace shaderbed {
 namespace {
 
-// OpDecorate (opcode 71) with decoration RelaxedPrecision (0).
+// OpDecorate with decoration RelaxedPrecision.
 size_t relaxed_decorations(const std::vector<uint32_t>& spirv) {
   size_t n = 0;
-  for (size_t i = 5; i < spirv.size();) {
-    const uint32_t words = spirv[i] >> 16, opcode = spirv[i] & 0xffff;
-    if (words == 0) break;
-    if (opcode == 71 && words >= 3 && spirv[i + 2] == 0) ++n;
-    i += words;
-  }
+  for (const SpirvInstruction in : SpirvInstructions(spirv))
+    if (in.opcode == spv::Op::OpDecorate && in.words.size() >= 3 &&
+        in.words[2] == std::to_underlying(spv::Decoration::RelaxedPrecision))
+      ++n;
   return n;
 }
 

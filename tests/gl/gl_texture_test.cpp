@@ -14,6 +14,7 @@
 #include "GlTestSupport.h"
 #include "TextureProbes.h"
 #include "compile/Compiler.h"
+#include "pipeline/SpirvWords.h"
 
 namespace shaderbed::gl_test {
 namespace {
@@ -188,12 +189,15 @@ TEST(GlLookupTextureCross, UnitThatDisagreesWithReflectionIsAnError) {
 // Rewrites the Location decoration of every UniformConstant variable of a module.
 void move_uniform_locations(std::vector<uint32_t>& spirv, uint32_t location) {
   std::vector<uint32_t> uniform_constants;
-  for (size_t at = 5; at < spirv.size(); at += spirv[at] >> 16)
-    if ((spirv[at] & 0xffff) == 59 && spirv[at + 3] == 0) uniform_constants.push_back(spirv[at + 2]);  // OpVariable
-  for (size_t at = 5; at < spirv.size(); at += spirv[at] >> 16)
-    if ((spirv[at] & 0xffff) == 71 && spirv[at + 2] == 30 &&  // OpDecorate id Location
-        std::ranges::find(uniform_constants, spirv[at + 1]) != uniform_constants.end())
-      spirv[at + 3] = location;
+  for (const SpirvInstruction in : SpirvInstructions(spirv))
+    if (in.opcode == spv::Op::OpVariable && in.words.size() >= 4 &&
+        in.words[3] == std::to_underlying(spv::StorageClass::UniformConstant))
+      uniform_constants.push_back(in.words[2]);
+  for (const SpirvInstruction in : SpirvInstructions(spirv))
+    if (in.opcode == spv::Op::OpDecorate && in.words.size() >= 4 &&
+        in.words[2] == std::to_underlying(spv::Decoration::Location) &&
+        std::ranges::find(uniform_constants, in.words[1]) != uniform_constants.end())
+      spirv[in.offset + 3] = location;
 }
 
 TEST(GlLookupTextureSpirv, SamplersOfTwoStagesOnOneUniformLocationIsAnError) {

@@ -1,25 +1,12 @@
 #include "backends/gl/SpirvUniformLocations.h"
 
-#include <cstring>
 #include <map>
 
 #include "backends/gl/GlError.h"
+#include "pipeline/SpirvWords.h"
 
 namespace shaderbed::gl {
 namespace {
-
-constexpr uint32_t op_name = 5;
-constexpr uint32_t op_variable = 59;
-constexpr uint32_t op_decorate = 71;
-constexpr uint32_t decoration_location = 30;
-constexpr uint32_t decoration_binding = 33;
-constexpr uint32_t storage_uniform_constant = 0;
-constexpr size_t header_words = 5;
-
-std::string literal_string(const uint32_t* words, size_t count) {
-  const auto* chars = reinterpret_cast<const char*>(words);
-  return std::string(chars, strnlen(chars, count * sizeof(uint32_t)));
-}
 
 std::string describe(const SpirvUniformLocation& u) {
   std::string text = u.name.empty() ? "an unnamed uniform" : "'" + u.name + "'";
@@ -33,19 +20,16 @@ std::vector<SpirvUniformLocation> spirv_uniform_locations(const std::vector<uint
   std::map<uint32_t, std::string> names;
   std::map<uint32_t, uint32_t> locations, bindings;
   std::vector<uint32_t> uniform_constants;
-  for (size_t at = header_words; at < spirv.size();) {
-    const uint32_t word_count = spirv[at] >> 16;
-    const uint32_t opcode = spirv[at] & 0xffff;
-    if (word_count == 0 || at + word_count > spirv.size()) break;
-    const uint32_t* operands = &spirv[at + 1];
-    if (opcode == op_name && word_count >= 3) names[operands[0]] = literal_string(operands + 1, word_count - 2);
-    if (opcode == op_decorate && word_count >= 4) {
-      if (operands[1] == decoration_location) locations[operands[0]] = operands[2];
-      if (operands[1] == decoration_binding) bindings[operands[0]] = operands[2];
+  for (const SpirvInstruction in : SpirvInstructions(spirv)) {
+    const std::span<const uint32_t> w = in.words;
+    if (in.opcode == spv::Op::OpName && w.size() >= 3) names[w[1]] = spirv_literal_string(w.subspan(2));
+    if (in.opcode == spv::Op::OpDecorate && w.size() >= 4) {
+      if (w[2] == std::to_underlying(spv::Decoration::Location)) locations[w[1]] = w[3];
+      if (w[2] == std::to_underlying(spv::Decoration::Binding)) bindings[w[1]] = w[3];
     }
-    if (opcode == op_variable && word_count >= 4 && operands[2] == storage_uniform_constant)
-      uniform_constants.push_back(operands[1]);
-    at += word_count;
+    if (in.opcode == spv::Op::OpVariable && w.size() >= 4 &&
+        w[3] == std::to_underlying(spv::StorageClass::UniformConstant))
+      uniform_constants.push_back(w[2]);
   }
   std::vector<SpirvUniformLocation> result;
   for (uint32_t id : uniform_constants) {

@@ -1,16 +1,14 @@
 #include "backends/vulkan/VulkanPipeline.h"
 
 #include <array>
-#include <cstring>
 #include <string>
 #include <vector>
 
 #include "backends/vulkan/VulkanResult.h"
+#include "pipeline/SpirvWords.h"
 
 namespace shaderbed::vulkan {
 namespace {
-
-constexpr uint32_t spirv_magic = 0x07230203;
 
 std::string entry_point(const ShaderModule& module) {
   return module.entry_point.empty() ? "main" : module.entry_point;
@@ -22,21 +20,12 @@ const char* stage_name(Stage stage) { return stage == Stage::vertex ? "vertex" :
 // because a pipeline naming a missing entry point is undefined behaviour, not an error
 // code: drivers may crash on it.
 bool has_entry_point(const std::vector<uint32_t>& spirv, Stage stage, const std::string& name) {
-  constexpr uint32_t op_entry_point = 15;
-  constexpr uint32_t header_words = 5;
-  const uint32_t execution_model = stage == Stage::vertex ? 0 : 4;  // Vertex, Fragment
-  for (size_t at = header_words; at < spirv.size();) {
-    const uint32_t word_count = spirv[at] >> 16;
-    const uint32_t opcode = spirv[at] & 0xffff;
-    if (word_count == 0 || at + word_count > spirv.size()) return false;
-    if (opcode == op_entry_point && word_count >= 4 && spirv[at + 1] == execution_model) {
-      // The name is a nul-terminated UTF-8 literal packed little-endian from word 3.
-      const auto* chars = reinterpret_cast<const char*>(&spirv[at + 3]);
-      const size_t max_chars = size_t(word_count - 3) * sizeof(uint32_t);
-      if (std::string(chars, strnlen(chars, max_chars)) == name) return true;
-    }
-    at += word_count;
-  }
+  const spv::ExecutionModel model =
+      stage == Stage::vertex ? spv::ExecutionModel::Vertex : spv::ExecutionModel::Fragment;
+  for (const SpirvInstruction in : SpirvInstructions(spirv))
+    if (in.opcode == spv::Op::OpEntryPoint && in.words.size() >= 4 && in.words[1] == std::to_underlying(model) &&
+        spirv_literal_string(in.words.subspan(3)) == name)
+      return true;
   return false;
 }
 
@@ -47,7 +36,7 @@ Result<OwnedShaderModule> create_shader_module(VkDevice device, const ShaderModu
   if (module.stage != expected)
     return fail_here(std::string("the program's ") + stage_name(expected) + " module is a " + stage_name(module.stage) +
                      " shader");
-  if (module.spirv.empty() || module.spirv.front() != spirv_magic)
+  if (module.spirv.empty() || module.spirv.front() != spv::MagicNumber)
     return fail_here(std::string("the ") + stage_name(expected) + " module has no SPIR-V for the Vulkan target");
   if (!has_entry_point(module.spirv, expected, entry_point(module)))
     return fail_here(std::string("the ") + stage_name(expected) + " SPIR-V has no " + stage_name(expected) +
