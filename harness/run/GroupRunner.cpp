@@ -185,6 +185,8 @@ struct GroupRunner::Impl final : GroupDrawer {
     r.vertex_spirv_hash = spirv_hash(compiled.program->vertex.spirv);
     r.fragment_spirv_hash = spirv_hash(compiled.program->fragment.spirv);
     std::tie(r.vertex_instructions, r.fragment_instructions) = compiled.instructions;
+    // The group's LUT (with its bound's errors), or another variant's own: an original in
+    // another variant samples its LUT, not the port's.
     const Result<const Texture*> lut = &variant == group_->variant ? group_lut_ : variant_lut(c, variant);
     if (!lut) return std::unexpected(lut.error());
     if (!cell.backend->backend) return std::unexpected(Error(cell.backend->backend.error()).in_backend(cell.backend->name));
