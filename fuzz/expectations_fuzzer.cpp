@@ -10,7 +10,7 @@
 
 namespace {
 
-shaderbed::CellResult cell(std::string status, std::string case_name, std::string shape) {
+shaderbed::CellResult cell(shaderbed::CellStatus status, std::string case_name, std::string shape) {
   shaderbed::CellResult r;
   r.case_name = std::move(case_name);
   r.variant = "pixel";
@@ -18,7 +18,7 @@ shaderbed::CellResult cell(std::string status, std::string case_name, std::strin
   r.backend = "gl";
   r.path = "spirv";
   r.shape = std::move(shape);
-  r.status = std::move(status);
+  r.status = status;
   return r;
 }
 
@@ -44,7 +44,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     return 0;
   }
   RunReport report;
-  report.results = {cell("fail", "warn", "torus"), cell("pass", "phong", "cube"), cell("error", "a*b", "*")};
+  report.results = {cell(CellStatus::fail, "warn", "torus"), cell(CellStatus::pass, "phong", "cube"), cell(CellStatus::error, "a*b", "*")};
   for (const KnownFailure& k : *known)
     for (const CellResult& r : report.results) (void)matches(k.pattern, r.id());
   (void)apply_expectations(*known, report);
