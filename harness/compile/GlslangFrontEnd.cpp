@@ -14,6 +14,7 @@
 #include "compile/GlslProfile.h"
 #include "compile/HlslGuards.h"
 #include "compile/HlslIncluder.h"
+#include "compile/HlslIntrinsics.h"
 
 namespace shaderbed {
 namespace {
@@ -133,11 +134,17 @@ Result<std::vector<uint32_t>> glslang_to_spirv(Language language, const ShaderSo
     shader.setEnvClient(glslang::EShClientOpenGL, glslang::EShTargetOpenGL_450);
   shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
 
+  // HLSL's preamble, or the Cg layer's, and the intrinsics glslang gets wrong routed to
+  // correct ones (HlslIntrinsics.h; Cg's layer substitutes its own lit).
+  const std::string preamble =
+      hlsl ? (cg ? cg->preamble : std::string(kHlslPreamble)) +
+                 hlsl_intrinsic_corrections(source_text, HlslIntrinsicSet{.lit = !cg})
+           : std::string();
   int messages = EShMsgSpvRules;
   if (vulkan_rules) messages |= EShMsgVulkanRules;
   if (hlsl) {
     messages |= EShMsgReadHlsl | EShMsgHlslOffsets | EShMsgHlslDX9Compatible | EShMsgHlslLegalization;
-    shader.setPreamble(cg ? cg->preamble.c_str() : kHlslPreamble);
+    shader.setPreamble(preamble.c_str());
     shader.setHlslIoMapping(true);
     // Keep semantics (POSITION, NORMAL, TEXCOORDn) in the SPIR-V so vertex inputs can be
     // matched to mesh attributes by meaning, not by declaration order.
