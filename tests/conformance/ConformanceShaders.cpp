@@ -89,11 +89,12 @@ ProgramSource conformance_program(const std::vector<Check>& checks, Language lan
   fs += std::string("// Conformance test shader: evaluates every ") + to_string(language) +
         " intrinsic check at pixel x (tests/conformance/IntrinsicChecks.cpp).\n";
   if (language == Language::hlsl)
-    fs += "float One;\n";
+    fs += "float One;\nsampler2D Tex;\n";
   else if (language == Language::cg)
-    fs += "uniform float One;\n";
+    fs += "uniform float One;\nuniform sampler2D Tex;\n";
   else
-    fs += "layout(std140, binding = 0) uniform Probe { float One; };\nlayout(location = 0) out vec4 colour;\n";
+    fs += "layout(std140, binding = 0) uniform Probe { float One; };\nlayout(binding = 1) uniform sampler2D Tex;\n"
+          "layout(location = 0) out vec4 colour;\n";
   fs += pad_helpers(language);
   if (language == Language::hlsl)
     fs += "float4 main(float4 pos : SV_Position) : SV_Target\n{\n";

@@ -416,6 +416,47 @@ std::vector<Check> build() {
   derivative("ddy(-2.5 pos.y)", "ddy(-2.5 * pos.y)", "dFdy(-2.5 * pos.y)", -2.5);
   derivative("ddy(pos.x)", "ddy(pos.x)", "dFdy(pos.x)", 0);
   derivative("fwidth(2 pos.x - 3 pos.y)", "fwidth(2.0 * pos.x - 3.0 * pos.y)", "fwidth(2.0 * pos.x - 3.0 * pos.y)", 5);
+
+  // Lookups in Tex (kTextureSize square, its mip chain; texel (x, y) of level L holds
+  // (x, y, L, 1); nearest filtering and nearest mip: see conformance_texture()). Every
+  // lookup runs in uniform control flow, as implicit-LOD ones must.
+  const auto lookup = [&](const std::string& name, const std::string& hlsl, const std::string& glsl, Values e,
+                          unsigned languages) {
+    t.add({.intrinsic = name, .hlsl_cg = hlsl, .glsl = glsl, .languages = languages, .expected = std::move(e),
+           .uniform_flow = true, .literal_only = true});
+  };
+  const auto centre = [](int texel, int level_size) { return fmt::format("{:.9g}", (texel + 0.5) / level_size); };
+  const int n = kTextureSize;
+  lookup("tex2D at texel (2, 1)", "tex2D(Tex, float2(" + centre(2, n) + ", " + centre(1, n) + "))",
+         "texture(Tex, vec2(" + centre(2, n) + ", " + centre(1, n) + "))", {2, 1, 0, 1}, kAll);
+  for (const auto& [lod, level] : {std::pair{0.0, 0}, {1.0, 1}, {2.0, 2}, {7.0, 2}, {-1.0, 0}}) {
+    const int size = n >> level;
+    const std::string u = centre(size - 1, size), v = centre(0, size), l = fmt::format("{:.9g}", lod);
+    lookup("tex2Dlod, lod " + l, "tex2Dlod(Tex, float4(" + u + ", " + v + ", 0.0, " + l + "))",
+           "textureLod(Tex, vec2(" + u + ", " + v + "), " + l + ")", {double(size - 1), 0, double(level), 1}, kAll);
+  }
+  // tex2Dproj divides by .w (HLSL); Cg's own tex2Dproj divides by the last of a float3 and
+  // is refused by the Cg layer (cg_dialect_test).
+  for (double w : {2.0, 0.5, -4.0}) {
+    const std::string q = fmt::format("{:.9g}", w);
+    const std::string uw = fmt::format("{:.9g}", (1 + 0.5) / n * w), vw = fmt::format("{:.9g}", (3 + 0.5) / n * w);
+    lookup("tex2Dproj, w " + q, "tex2Dproj(Tex, float4(" + uw + ", " + vw + ", 0.0, " + q + "))",
+           "textureProj(Tex, vec4(" + uw + ", " + vw + ", 0.0, " + q + "))", {1, 3, 0, 1}, kHlsl | kGlsl);
+  }
+  // Bias and gradients move the level: the coordinates cover one texel of level 0 per
+  // pixel (LOD 0) wherever the pixel is, so only the level (.z) is pinned down.
+  const std::string per_pixel = fmt::format("pos.xy * {:.9g}", 1.0 / n);
+  for (const auto& [bias, level] : {std::pair{0.0, 0}, {1.0, 1}, {2.0, 2}, {-1.0, 0}}) {
+    const std::string b = fmt::format("{:.9g}", bias);
+    lookup("tex2Dbias, bias " + b, "tex2Dbias(Tex, float4(" + per_pixel + ", 0.0, " + b + ")).z",
+           "texture(Tex, " + per_pixel + ", " + b + ").z", {double(level)}, kAll);
+  }
+  for (const auto& [texels, level] : {std::pair{1.0, 0}, {2.0, 1}, {4.0, 2}}) {
+    const std::string g = fmt::format("{:.9g}", texels / n);
+    lookup("tex2Dgrad, " + fmt::format("{:g}", texels) + " texels per pixel",
+           "tex2Dgrad(Tex, float2(0.5, 0.5), float2(" + g + ", 0.0), float2(0.0, " + g + ")).z",
+           "textureGrad(Tex, vec2(0.5, 0.5), vec2(" + g + ", 0.0), vec2(0.0, " + g + ")).z", {double(level)}, kAll);
+  }
   return t.checks;
 }
 
@@ -425,6 +466,26 @@ std::string number(double x) {
 }
 
 }  // namespace
+
+Texture conformance_texture() {
+  Texture t{.name = "Tex", .dimensions = 2, .width = kTextureSize, .height = kTextureSize,
+            .format = TexelFormat::rgba32_float};
+  for (int level = 0, size = kTextureSize; size >= 1; ++level, size /= 2) {
+    std::vector<float> texels;
+    for (int y = 0; y < size; ++y)
+      for (int x = 0; x < size; ++x) texels.insert(texels.end(), {float(x), float(y), float(level), 1.0f});
+    if (level == 0)
+      t.texels = std::move(texels);
+    else
+      t.mip_levels.push_back(std::move(texels));
+  }
+  return t;
+}
+
+SamplerSettings conformance_sampler() {
+  return SamplerSettings{.min_filter = TextureFilter::nearest, .mag_filter = TextureFilter::nearest,
+                         .mip_filter = MipFilter::nearest};
+}
 
 const std::vector<Check>& intrinsic_checks() {
   static const std::vector<Check> checks = build();

@@ -6,6 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "pipeline/SamplerSettings.h"
+#include "pipeline/Texture.h"
+
 namespace shaderbed::conformance {
 
 // One argument: a scalar (1x1), a vector (1xN) or a matrix (RxC, row-major as HLSL writes
@@ -41,6 +44,12 @@ struct Check {
 
 // Every check, in a fixed order (the pixel a check lands on is its index).
 const std::vector<Check>& intrinsic_checks();
+
+// The texture the lookups sample, bound as "Tex": kTextureSize square with its full mip
+// chain, texel (x, y) of level L = (x, y, L, 1); sampled nearest, nearest mip, clamped.
+constexpr int kTextureSize = 4;
+Texture conformance_texture();
+SamplerSettings conformance_sampler();
 
 // "(0.5, float3(1, 0, -1))": the arguments as a report prints them.
 std::string describe_args(const std::vector<Arg>& args);

@@ -66,6 +66,16 @@ std::string values(const std::vector<double>& v) {
   return s + ")";
 }
 
+// Tex for every sampler the program declares, sampled as conformance_sampler() says.
+class ConformanceTextures final : public TextureResolver {
+ public:
+  Result<const Texture*> texture(const SamplerBinding&) const override { return &texture_; }
+  Result<SamplerSettings> settings(const SamplerBinding&) const override { return conformance_sampler(); }
+
+ private:
+  Texture texture_ = conformance_texture();
+};
+
 class IntrinsicConformance : public ::testing::TestWithParam<Cell> {};
 
 TEST_P(IntrinsicConformance, EveryIntrinsicMatchesItsDefinition) {
@@ -76,9 +86,10 @@ TEST_P(IntrinsicConformance, EveryIntrinsicMatchesItsDefinition) {
   auto backend = backend_named(cell.backend);
   ASSERT_TRUE(backend) << backend.error().to_string();
   const test::MapResolver uniforms({{"One", {1.0f}}});
+  const ConformanceTextures textures;
   const Mesh quad = full_screen_quad();
   auto out = (*backend)->render(DrawJob{.program = *program, .path = cell.path, .mesh = quad, .uniforms = uniforms,
-                                        .width = image_width(checks), .height = kImageHeight});
+                                        .width = image_width(checks), .height = kImageHeight, .textures = &textures});
   ASSERT_TRUE(out) << out.error().to_string();
 
   // CONFORMANCE_DUMP=1 prints every pixel (the check at pixel p is check p / 2), for
