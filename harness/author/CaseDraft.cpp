@@ -47,6 +47,11 @@ std::string simplified(std::string s) {
   return out;
 }
 
+// Each language's matrices switch together; any other doubt is its uniform's own.
+std::string doubt_id(Language language, const UniformFacts& u, const UniformGuess& g) {
+  return std::string(to_string(language)) + " " + (g.doubt_group.empty() ? u.name : g.doubt_group);
+}
+
 struct LanguageGuesses {
   const SurveyedLanguage* survey;
   std::vector<std::pair<const UniformFacts*, UniformGuess>> uniforms;
@@ -86,13 +91,14 @@ std::vector<std::string> images_in(const std::string& folder) {
 }
 
 CaseDraft draft_case(const std::vector<SurveyedLanguage>& languages, const std::string& case_path,
-                     const std::vector<std::string>& images) {
+                     const std::vector<std::string>& images, const std::map<std::string, std::string>& switched) {
   const fs::path root = shader_root_of(fs::absolute(case_path).lexically_normal().string());
   CaseTomlWriter w;
   if (languages.empty()) return {};
 
   // Guess everything first: the parameters and the ambient colour go above the bindings.
   std::vector<LanguageGuesses> guesses;
+  std::vector<GuessDoubt> doubts;
   std::map<std::string, std::pair<ParameterGuess, std::vector<std::string>>> parameters;
   bool uses_ambient = false;
   for (const SurveyedLanguage& s : languages) {
@@ -105,8 +111,28 @@ CaseDraft draft_case(const std::vector<SurveyedLanguage>& languages, const std::
       }
     for (const UniformFacts& u : s.uniforms) {
       UniformGuess g = guess_uniform(u, context);
-      if (g.parameter) {
-        auto& [p, users] = parameters.try_emplace(g.parameter->name, *g.parameter, std::vector<std::string>{}).first->second;
+      if (g.unsure()) {
+        const std::string id = doubt_id(s.language, u, g);
+        auto it = std::find_if(doubts.begin(), doubts.end(), [&](const GuessDoubt& d) { return d.id == id; });
+        if (it == doubts.end()) {
+          doubts.push_back({.id = id, .language = s.language, .uniforms = "", .guessed = g.doubt, .instead = "", .lines = {},
+                            .switched = switched.contains(id)});
+          it = doubts.end() - 1;
+        }
+        it->uniforms += (it->uniforms.empty() ? "'" : ", '") + u.name + "'";
+        it->instead += (it->instead.empty() ? "" : "; ") + toml_entry(u.name, binding_value(g.alternatives.front()));
+        if (it->switched) {
+          UniformGuess alternative = g.alternatives.front();
+          alternative.reason += "; init's check run switched to this: " + switched.at(id);
+          alternative.doubt = g.doubt;
+          alternative.doubt_group = g.doubt_group;
+          alternative.alternatives = {std::move(g)};
+          alternative.alternatives.front().alternatives.clear();
+          g = std::move(alternative);
+        }
+      }
+      for (const ParameterGuess& parameter : g.parameters) {
+        auto& [p, users] = parameters.try_emplace(parameter.name, parameter, std::vector<std::string>{}).first->second;
         users.push_back(u.name);
       }
       for (const BindingSource& source : g.sources) uses_ambient |= source.name == "ambient_light";
@@ -177,7 +203,12 @@ CaseDraft draft_case(const std::vector<SurveyedLanguage>& languages, const std::
     for (const auto& [u, g] : lg.uniforms) {
       if (g.bound_by_default) w.commented("# " + toml_key(u->name), g.reason);
       else if (g.todo()) w.todo("# " + toml_entry(u->name, float_list(g.placeholder)), g.reason + ", under [" + table + "]");
-      else w.commented(toml_entry(u->name, binding_value(g)), g.reason);
+      else {
+        if (g.unsure() || !g.alternatives.empty())
+          for (GuessDoubt& d : doubts)
+            if (d.id == doubt_id(s.language, *u, g)) d.lines.push_back(w.next_line());
+        w.commented(toml_entry(u->name, binding_value(g)), g.reason);
+      }
     }
   }
 
@@ -244,7 +275,7 @@ CaseDraft draft_case(const std::vector<SurveyedLanguage>& languages, const std::
   std::string text = w.text();
   // The header asks for the TODOs only when there are some (same line count either way).
   if (w.todos().empty()) text.replace(text.find("check the TODOs."), 16, "check its guesses.");
-  return {std::move(text), w.todos()};
+  return {std::move(text), w.todos(), std::move(doubts)};
 }
 
 }  // namespace shaderbed

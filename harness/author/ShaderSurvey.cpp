@@ -127,6 +127,9 @@ void collect_reflection(SurveyedLanguage& out, const CompiledProgram& program, c
           }
         }
         u.declared_space = declared_space(text, m.name);
+        u.component_meanings = component_meanings(text, m.name);
+        if (u.component_meanings.empty())
+          u.component_meanings = component_meanings(&text == &vertex_text ? fragment_text : vertex_text, m.name);
         out.uniforms.push_back(std::move(u));
       }
     for (const SamplerBinding& s : module->reflection.samplers)
