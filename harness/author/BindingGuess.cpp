@@ -330,6 +330,9 @@ std::optional<UniformGuess> material_guess(const Words& w, const UniformFacts& u
   if (colour && (has_any(w, {"diffuse", "albedo"}) || glued == "kd" ||
                  (has_any(w, {"color", "colour"}) && (material || has(w, "base")))))
     return colour_guess("diffuse", u, "name " + q + " looks like a diffuse colour");
+  // A bare "colour" (Unity's _Color, u_color) is the surface's tint: its diffuse colour.
+  if (colour && w.size() == 1 && has_any(w, {"color", "colour"}))
+    return colour_guess("diffuse", u, "name " + q + " is a bare colour: the surface's, taken as its diffuse colour");
   return std::nullopt;
 }
 

@@ -245,14 +245,35 @@ CaseDraft draft_case(const std::vector<SurveyedLanguage>& languages, const std::
   const bool common = std::all_of(textures.begin(), textures.end(), [&](const auto& t) {
     return names_of(t.second) == names_of(textures.front().second);
   }) && (textures.size() == languages.size() || textures.size() <= 1);
+  // Every language samples as the original does: its SamplerState (guessed: linear, wrap),
+  // its effect's sampler_state, else the defaults (linear, clamp). A port sampling
+  // otherwise would differ for a reason no shader has.
+  const SurveyedLanguage& first_language = languages.front();
+  std::string sampling_why;
+  SamplerSettings sampling;
+  for (const SamplerBinding& b : first_language.samplers)
+    if (b.kind == SamplerKind::sampler && sampling_why.empty()) {
+      sampling.address_u = sampling.address_v = sampling.address_w = AddressMode::wrap;
+      sampling_why = "as the original's SamplerState '" + b.name + "' (a guess: a sampler state's usual settings)";
+    }
+  for (const auto& [name, settings] : first_language.declared_sampling)
+    if (sampling_why.empty()) {
+      sampling = settings;
+      sampling_why = "as the original's sampler_state of '" + name + "'";
+    }
+  if (sampling_why.empty()) sampling_why = "as the original samples (the defaults)";
+  const auto sampling_entries = [&] {
+    return TomlEntries{{"filter", toml_string(to_string(sampling.mag_filter))}, {"address", toml_string(to_string(sampling.address_u))}};
+  };
   for (size_t i = 0; i < textures.size(); ++i) {
     if (common && i > 0) break;
     const auto& [language, samplers] = textures[i];
+    const bool port = language != first_language.language && !common;
     w.header(common ? "textures" : std::string("textures.") + to_string(language));
     for (const SamplerBinding& b : samplers) {
       if (b.kind == SamplerKind::sampler) {
-        w.commented(toml_entry(b.name, toml_inline_table({{"filter", toml_string("linear")}, {"address", toml_string("wrap")}})),
-                    "a guess: a sampler state's usual settings");
+        w.commented(toml_entry(b.name, toml_inline_table(sampling_entries())),
+                    port ? sampling_why : "a guess: a sampler state's usual settings");
         continue;
       }
       if (b.cube) {
@@ -265,7 +286,11 @@ CaseDraft draft_case(const std::vector<SurveyedLanguage>& languages, const std::
       if (image.empty())
         w.todo("# " + toml_entry(b.name, toml_inline_table({{"file", toml_string("FILE.png")}})),
                "bind texture '" + b.name + "' to an image file");
-      else
+      else if (port && b.kind == SamplerKind::combined) {
+        TomlEntries entries{{"file", toml_string(relative_to(root, image))}};
+        for (auto& entry : sampling_entries()) entries.push_back(std::move(entry));
+        w.commented(toml_entry(b.name, toml_inline_table(entries)), why + "; sampled " + sampling_why);
+      } else
         w.commented(toml_entry(b.name, toml_inline_table({{"file", toml_string(relative_to(root, image))}})), why);
     }
   }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 
 #include <fmt/format.h>
 
@@ -110,6 +111,7 @@ Result<GuessCheck> check_guesses(const GuessCheckInput& input) {
   Trial best = std::move(*first);
   GuessCheck out;
   const Language original = input.languages.front().language;
+  std::set<std::string> confirmed;
   // Each doubt once, in the order the case lists them (the original's first); a switch kept
   // changes what the later ones are judged against.
   for (size_t k = 0; k < best.draft.doubts.size(); ++k) {
@@ -124,6 +126,9 @@ Result<GuessCheck> check_guesses(const GuessCheckInput& input) {
     if (!trial) return std::unexpected(trial.error());
     const std::string outcome = "before, " + best.score.text() + "; after, " + trial->score.text();
     if (better(trial->score, best.score)) {
+      // A valid original or fewer disagreeing cells confirm the switch; a smaller error alone does not.
+      if (trial->score.no_reference < best.score.no_reference || trial->score.not_passed < best.score.not_passed)
+        confirmed.insert(doubt.id);
       out.changed.push_back(fmt::format("{}: {} now bound as `{}` instead of {}: {}", lines_text(doubt.lines), doubt.uniforms,
                                         doubt.instead, doubt.guessed, outcome));
       switched = std::move(trial_switch);
@@ -138,9 +143,12 @@ Result<GuessCheck> check_guesses(const GuessCheckInput& input) {
 
   if (!best.score.all_pass()) {
     for (const GuessDoubt& d : best.draft.doubts)
-      if (!d.switched && may_explain(d, best.score, original))
-        out.check_first.push_back(fmt::format("{}: {}: {}, a guess no run confirmed (switching to `{}` did not help)",
-                                              lines_text(d.lines), d.uniforms, d.guessed, d.instead));
+      if (!confirmed.contains(d.id) && may_explain(d, best.score, original))
+        out.check_first.push_back(
+            d.switched ? fmt::format("{}: {}: switched by init's check (it lowered the error), still not confirmed",
+                                     lines_text(d.lines), d.uniforms)
+                       : fmt::format("{}: {}: {}, a guess no run confirmed (switching to `{}` did not help)",
+                                     lines_text(d.lines), d.uniforms, d.guessed, d.instead));
     for (const std::string& todo : best.draft.todos) out.check_first.push_back(todo + " (TODO)");
   }
   out.draft = std::move(best.draft);
