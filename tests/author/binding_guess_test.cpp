@@ -172,9 +172,9 @@ TEST(BindingGuess, AmbientMaterialAndLightColours) {
     EXPECT_EQ(guess(vec(name, 3)), "1,1,1") << name;
   EXPECT_EQ(guess(UniformFacts{.name = "padding"}), "0");
   const UniformGuess kd = guess_uniform(vec("Kd", 3), {});
-  ASSERT_TRUE(kd.parameter);
-  EXPECT_EQ(kd.parameter->name, "diffuse");
-  EXPECT_EQ(kd.parameter->value.size(), 3u);
+  ASSERT_EQ(kd.parameters.size(), 1u);
+  EXPECT_EQ(kd.parameters[0].name, "diffuse");
+  EXPECT_EQ(kd.parameters[0].value.size(), 3u);
 }
 
 TEST(BindingGuess, LegacyMatricesAreTheScenes) {
