@@ -149,7 +149,7 @@ Result<GuessCheck> check_guesses(const GuessCheckInput& input) {
                                      lines_text(d.lines), d.uniforms)
                        : fmt::format("{}: {}: {}, a guess no run confirmed (switching to `{}` did not help)",
                                      lines_text(d.lines), d.uniforms, d.guessed, d.instead));
-    for (const std::string& todo : best.draft.todos) out.check_first.push_back(todo + " (TODO)");
+    for (const std::string& todo : best.draft.todos) out.check_first.push_back("TODO " + todo);
   }
   out.draft = std::move(best.draft);
   out.report = std::move(best.report);
