@@ -1,6 +1,5 @@
 // `shaderbed init SHADER...`: a first case file for your own shaders (author/CaseDraft.h),
 // then one run of it, and what still needs you.
-#include <unistd.h>
 
 #include <filesystem>
 #include <map>
@@ -15,9 +14,7 @@
 #include "cli/commands/InitGuessCheck.h"
 #include "cli/commands/Command.h"
 #include "core/AtomicFile.h"
-#include "core/ThisExecutable.h"
 #include "core/WritablePath.h"
-#include "report/ConsoleProgress.h"
 #include "report/ConsoleReport.h"
 #include "run/Runner.h"
 
