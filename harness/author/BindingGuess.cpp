@@ -28,7 +28,8 @@ constexpr std::array kVocabulary = {
     "to",       "sun",       "ambient",    "diffuse",  "specular",  "spec",     "power",     "exponent",
     "shininess", "gloss",    "glossiness", "color",    "colour",    "col",      "emissive",  "emission",
     "material", "base",      "albedo",     "surface",  "global",    "padding",  "pad",       "intensity",
-    "space",    "ws",        "vs",         "es",       "os",        "ec"};
+    "space",    "ws",        "vs",         "es",       "os",        "ec",       "scale",     "factor",
+    "debug",    "multiplier", "unity"};
 
 bool in_vocabulary(std::string_view w) {
   return std::find(kVocabulary.begin(), kVocabulary.end(), w) != kVocabulary.end();
@@ -80,8 +81,16 @@ std::string matrix_quantity(const Words& words, const UniformFacts& u, std::stri
   bool world = false, view = false, proj = false, inverse = false, transpose = false, normal = false;
   bool transform = false;
   const bool glued_name = words.size() == 1;
+  // Unity's "from to" names: unity_ObjectToWorld is the world matrix, unity_WorldToObject its inverse.
+  if (const auto to = std::find(words.begin(), words.end(), "to"); to != words.end() && to + 1 != words.end()) {
+    const auto object_space = [](const std::string& w) { return w == "object" || w == "obj" || w == "model" || w == "local"; };
+    if (std::any_of(words.begin(), to, object_space) && *(to + 1) == "world") return what = "the world (model) matrix", "world";
+    if (to != words.begin() && *(to - 1) == "world" && std::any_of(to + 1, words.end(), object_space))
+      return what = "the world (model) matrix, inverted", "world_inverse";
+    return "";
+  }
   for (const std::string& w : words) {
-    if (w == "matrix" || w == "mat" || w == "mtx" || std::all_of(w.begin(), w.end(), is_digit)) continue;
+    if (w == "matrix" || w == "mat" || w == "mtx" || w == "unity" || std::all_of(w.begin(), w.end(), is_digit)) continue;
     if (w == "world" || w == "model" || w == "object" || w == "obj" || w == "local") world = true;
     else if (w == "view" || w == "camera" || w == "cam" || w == "eye") view = true;
     else if (w == "proj" || w == "projection" || w == "persp" || w == "perspective") proj = true;
@@ -142,7 +151,13 @@ UniformGuess matrix_guess(std::string quantity, std::string reason, const Unifor
     g.layout = MatrixLayout::row_vector;
     g.reason += "; the source writes mul(v, " + u.name + "): row vectors";
   } else if (!u.mul_order) {
+    UniformGuess rows = g;
+    rows.layout = MatrixLayout::row_vector;
+    rows.reason += "; no mul() names it: row vectors, mul(v, M)";
     g.reason += "; no mul() names it, so column vectors are assumed (for mul(v, M) add layout = \"row_vector\")";
+    g.doubt = "column vectors (no mul() names it)";
+    g.doubt_group = "matrices";
+    g.alternatives.push_back(std::move(rows));
   }
   return g;
 }
@@ -204,21 +219,67 @@ UniformGuess vector_guess(Vector kind, std::string reason, const Words& w, const
   const std::string suffix = space_suffix(w, u, c, why);
   reason += "; " + why;
   if (kind == Vector::light_vector) reason += " (check the sign: some shaders take the direction the light travels)";
-  return guessed({named(base + suffix)}, std::move(reason));
+  UniformGuess g = guessed({named(base + suffix)}, std::move(reason));
+  // A float4 light names a position (w = 1) or a direction (w = 0) by its w alone, and
+  // shaders written for both (Unity's) test w: the name cannot settle which one it is.
+  const bool four = u.vecsize == 4 && !u.name.starts_with("gl_LightSource");
+  if (four && kind == Vector::light_position) {
+    g.doubt = "a position (w = 1), not a direction";
+    g.alternatives.push_back(guessed({named("light_vector" + suffix)}, g.reason + "; taken as a direction toward the light (w = 0)"));
+  } else if (four && kind == Vector::light_vector) {
+    g.doubt = "a direction (w = 0), not a position";
+    g.alternatives.push_back(guessed({named("light_position" + suffix)}, g.reason + "; taken as the light's position (w = 1)"));
+  }
+  return g;
 }
 
 // --- colours and material -------------------------------------------------------------
-
-// A colour parameter bound to a 4-vector takes alpha 1.
-std::vector<BindingSource> colour_parameter(const std::string& param, const UniformFacts& u) {
-  if (u.vecsize == 4) return {named(param), literal({1.0})};
-  return {named(param)};
-}
 
 ParameterGuess parameter(const std::string& name) {
   if (name == "diffuse") return {name, {0.7, 0.5, 0.3}, "a guess: the surface's diffuse colour"};
   if (name == "specular") return {name, {0.3, 0.3, 0.3}, "a guess: the surface's specular colour"};
   return {name, {12.0}, "a guess: the specular exponent"};
+}
+
+// What the declaration's comment says one component means ("w = specular power"), "" when it does not.
+std::string meaning_of(const UniformFacts& u, std::initializer_list<std::string_view> components) {
+  for (const auto& [which, meaning] : u.component_meanings)
+    if (std::find(components.begin(), components.end(), which) != components.end()) return meaning;
+  return "";
+}
+
+bool names_exponent(const Words& w) {
+  return has_any(w, {"power", "exponent", "exp", "shininess", "gloss", "glossiness", "smoothness"});
+}
+
+// A colour parameter. A 4-vector's w is what its comment says (`// w = specular power`),
+// else alpha 1; a specular colour's w without a comment is a doubt, since packing the
+// exponent there is common.
+UniformGuess colour_guess(const std::string& param, const UniformFacts& u, std::string reason) {
+  UniformGuess g = guessed({named(param)}, std::move(reason));
+  g.parameters.push_back(parameter(param));
+  if (u.vecsize != 4) return g;
+  if (const std::string w = meaning_of(u, {"w", "a", ".w", ".a"}); !w.empty()) {
+    const Words words = name_words(w);
+    g.reason += "; its comment says w = " + w;
+    if (names_exponent(words)) {
+      g.sources.push_back(named("power"));
+      g.parameters.push_back(parameter("power"));
+      g.reason += ": the specular exponent";
+    } else if (has_any(words, {"unused", "padding", "pad", "0"})) {
+      g.sources.push_back(literal({0.0}));
+    } else {
+      g.sources.push_back(literal({1.0}));
+    }
+    return g;
+  }
+  g.sources.push_back(literal({1.0}));
+  if (param != "specular") return g;
+  UniformGuess power = guessed({named(param), named("power")}, g.reason + "; w taken as the specular exponent");
+  power.parameters = {parameter(param), parameter("power")};
+  g.doubt = "w = 1 (no comment says what w holds; a specular colour often carries the exponent there)";
+  g.alternatives.push_back(std::move(power));
+  return g;
 }
 
 std::optional<UniformGuess> material_guess(const Words& w, const UniformFacts& u) {
@@ -229,13 +290,18 @@ std::optional<UniformGuess> material_guess(const Words& w, const UniformFacts& u
   const std::string q = "'" + n + "'";
   const auto with_parameter = [&](std::vector<BindingSource> sources, std::string reason, const std::string& param) {
     UniformGuess g = guessed(std::move(sources), std::move(reason));
-    g.parameter = parameter(param);
+    g.parameters.push_back(parameter(param));
     return g;
   };
   const bool light = has_any(w, {"light", "sun"});
   const bool material = has_any(w, {"material", "front", "surface", "object"});
   if (has_any(w, {"padding", "pad", "unused", "dummy", "reserved"}))
     return guessed({literal(zeros(value_count(u)))}, "name " + q + " looks like padding");
+  // A scale, debug or tuning factor multiplies something the port may not have at all: 1
+  // leaves what it scales as it is, whatever else its name says (u_ScaleFGDSpec).
+  if (u.is_float && !u.array_size && has_any(w, {"scale", "factor", "multiplier", "debug"}) && !has(w, "power"))
+    return guessed({literal(std::vector<double>(value_count(u), 1.0))},
+                   "name " + q + " looks like a scale (debug or tuning) factor: 1 leaves what it scales as it is");
   if (has(w, "ambient") && colour) {
     if (material || has(w, "ka") || n.ends_with("Ka"))
       return guessed({literal(std::vector<double>(u.vecsize, 1.0))},
@@ -260,10 +326,13 @@ std::optional<UniformGuess> material_guess(const Words& w, const UniformFacts& u
        ((has_any(w, {"specular", "spec"}) || w.size() == 1) && has_any(w, {"power", "exp"})) || glued == "ns"))
     return with_parameter({named("power")}, "name " + q + " looks like a specular exponent", "power");
   if (colour && (has_any(w, {"specular", "spec"}) || glued == "ks"))
-    return with_parameter(colour_parameter("specular", u), "name " + q + " looks like a specular colour", "specular");
+    return colour_guess("specular", u, "name " + q + " looks like a specular colour");
   if (colour && (has_any(w, {"diffuse", "albedo"}) || glued == "kd" ||
                  (has_any(w, {"color", "colour"}) && (material || has(w, "base")))))
-    return with_parameter(colour_parameter("diffuse", u), "name " + q + " looks like a diffuse colour", "diffuse");
+    return colour_guess("diffuse", u, "name " + q + " looks like a diffuse colour");
+  // A bare "colour" (Unity's _Color, u_color) is the surface's tint: its diffuse colour.
+  if (colour && w.size() == 1 && has_any(w, {"color", "colour"}))
+    return colour_guess("diffuse", u, "name " + q + " is a bare colour: the surface's, taken as its diffuse colour");
   return std::nullopt;
 }
 
@@ -357,6 +426,12 @@ UniformGuess guess_uniform(const UniformFacts& u, const GuessContext& c) {
       return vector_guess(kind, "semantic " + u.semantic + " is " + what, w, u, c);
   }
   if (auto g = material_from_semantic(u)) return *g;
+  // Unity's forward base pass gives the directional light's direction here, w = 0 (a
+  // point light's pass gives its position, w = 1).
+  if (vector3or4 && u.vecsize == 4 && u.name.starts_with("_WorldSpaceLightPos"))
+    return vector_guess(Vector::light_vector,
+                        "Unity's " + q + ": in the forward base pass the direction toward the directional light, w = 0", w, u,
+                        c);
   if (vector3or4) {
     if (auto kind = vector_kind(w, what); kind != Vector::none)
       return vector_guess(kind, "name " + q + " looks like " + what, w, u, c);

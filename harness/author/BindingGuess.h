@@ -8,6 +8,7 @@
 // Every guess carries the sentence that explains it; a uniform it cannot place is a TODO
 // with a commented-out placeholder of the right size. Pure: no files, no compiler.
 #include <optional>
+#include <utility>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -33,6 +34,9 @@ struct UniformFacts {
   // HLSL/Cg matrices: the order mul() takes this matrix in, when the source shows it
   // (mul(v, M): row_vector); nullopt when no mul() names it.
   std::optional<MatrixLayout> mul_order;
+  // What the declaration's comment says its components mean: `// rgb = colour, w = specular
+  // power` -> {{"rgb", "colour"}, {"w", "specular power"}}.
+  std::vector<std::pair<std::string, std::string>> component_meanings;
 };
 
 // What holds for the whole shader of one language.
@@ -54,11 +58,21 @@ struct UniformGuess {
   std::vector<BindingSource> sources;   // empty: no guess, a TODO
   MatrixLayout layout = MatrixLayout::column_vector;
   std::string reason;                   // why, for the line's comment (or the TODO's text)
-  std::optional<ParameterGuess> parameter;
+  std::vector<ParameterGuess> parameters;
   // The uniform takes its value without a binding (a legacy GL matrix the scene fills).
   bool bound_by_default = false;
   std::vector<double> placeholder;      // TODO: zeros of the uniform's size, for the commented-out line
+  // A guess the shader's text does not settle (a matrix no mul() names, a float4 light that
+  // may be a position or a direction, a w nobody explains) says what it is unsure of and what
+  // it would bind instead; `shaderbed init` tries that when its own run shows a blank
+  // original or a failing port. "" = the text settles it.
+  std::string doubt;                    // "row or column vectors", "position or direction"
+  std::vector<UniformGuess> alternatives;
+  // Guesses that switch together: every matrix of a shader whose mul()s it cannot see
+  // (a shader writes them all one way); "" = this uniform alone.
+  std::string doubt_group;
   bool todo() const { return sources.empty() && !bound_by_default; }
+  bool unsure() const { return !doubt.empty() && !alternatives.empty(); }
 };
 
 UniformGuess guess_uniform(const UniformFacts& uniform, const GuessContext& context);

@@ -47,6 +47,11 @@ std::string simplified(std::string s) {
   return out;
 }
 
+// Each language's matrices switch together; any other doubt is its uniform's own.
+std::string doubt_id(Language language, const UniformFacts& u, const UniformGuess& g) {
+  return std::string(to_string(language)) + " " + (g.doubt_group.empty() ? u.name : g.doubt_group);
+}
+
 struct LanguageGuesses {
   const SurveyedLanguage* survey;
   std::vector<std::pair<const UniformFacts*, UniformGuess>> uniforms;
@@ -86,13 +91,14 @@ std::vector<std::string> images_in(const std::string& folder) {
 }
 
 CaseDraft draft_case(const std::vector<SurveyedLanguage>& languages, const std::string& case_path,
-                     const std::vector<std::string>& images) {
+                     const std::vector<std::string>& images, const std::map<std::string, std::string>& switched) {
   const fs::path root = shader_root_of(fs::absolute(case_path).lexically_normal().string());
   CaseTomlWriter w;
   if (languages.empty()) return {};
 
   // Guess everything first: the parameters and the ambient colour go above the bindings.
   std::vector<LanguageGuesses> guesses;
+  std::vector<GuessDoubt> doubts;
   std::map<std::string, std::pair<ParameterGuess, std::vector<std::string>>> parameters;
   bool uses_ambient = false;
   for (const SurveyedLanguage& s : languages) {
@@ -105,8 +111,28 @@ CaseDraft draft_case(const std::vector<SurveyedLanguage>& languages, const std::
       }
     for (const UniformFacts& u : s.uniforms) {
       UniformGuess g = guess_uniform(u, context);
-      if (g.parameter) {
-        auto& [p, users] = parameters.try_emplace(g.parameter->name, *g.parameter, std::vector<std::string>{}).first->second;
+      if (g.unsure()) {
+        const std::string id = doubt_id(s.language, u, g);
+        auto it = std::find_if(doubts.begin(), doubts.end(), [&](const GuessDoubt& d) { return d.id == id; });
+        if (it == doubts.end()) {
+          doubts.push_back({.id = id, .language = s.language, .uniforms = "", .guessed = g.doubt, .instead = "", .lines = {},
+                            .switched = switched.contains(id)});
+          it = doubts.end() - 1;
+        }
+        it->uniforms += (it->uniforms.empty() ? "'" : ", '") + u.name + "'";
+        it->instead += (it->instead.empty() ? "" : "; ") + toml_entry(u.name, binding_value(g.alternatives.front()));
+        if (it->switched) {
+          UniformGuess alternative = g.alternatives.front();
+          alternative.reason += "; init's check run switched to this: " + switched.at(id);
+          alternative.doubt = g.doubt;
+          alternative.doubt_group = g.doubt_group;
+          alternative.alternatives = {std::move(g)};
+          alternative.alternatives.front().alternatives.clear();
+          g = std::move(alternative);
+        }
+      }
+      for (const ParameterGuess& parameter : g.parameters) {
+        auto& [p, users] = parameters.try_emplace(parameter.name, parameter, std::vector<std::string>{}).first->second;
         users.push_back(u.name);
       }
       for (const BindingSource& source : g.sources) uses_ambient |= source.name == "ambient_light";
@@ -177,7 +203,12 @@ CaseDraft draft_case(const std::vector<SurveyedLanguage>& languages, const std::
     for (const auto& [u, g] : lg.uniforms) {
       if (g.bound_by_default) w.commented("# " + toml_key(u->name), g.reason);
       else if (g.todo()) w.todo("# " + toml_entry(u->name, float_list(g.placeholder)), g.reason + ", under [" + table + "]");
-      else w.commented(toml_entry(u->name, binding_value(g)), g.reason);
+      else {
+        if (g.unsure() || !g.alternatives.empty())
+          for (GuessDoubt& d : doubts)
+            if (d.id == doubt_id(s.language, *u, g)) d.lines.push_back(w.next_line());
+        w.commented(toml_entry(u->name, binding_value(g)), g.reason);
+      }
     }
   }
 
@@ -214,14 +245,35 @@ CaseDraft draft_case(const std::vector<SurveyedLanguage>& languages, const std::
   const bool common = std::all_of(textures.begin(), textures.end(), [&](const auto& t) {
     return names_of(t.second) == names_of(textures.front().second);
   }) && (textures.size() == languages.size() || textures.size() <= 1);
+  // Every language samples as the original does: its SamplerState (guessed: linear, wrap),
+  // its effect's sampler_state, else the defaults (linear, clamp). A port sampling
+  // otherwise would differ for a reason no shader has.
+  const SurveyedLanguage& first_language = languages.front();
+  std::string sampling_why;
+  SamplerSettings sampling;
+  for (const SamplerBinding& b : first_language.samplers)
+    if (b.kind == SamplerKind::sampler && sampling_why.empty()) {
+      sampling.address_u = sampling.address_v = sampling.address_w = AddressMode::wrap;
+      sampling_why = "as the original's SamplerState '" + b.name + "' (a guess: a sampler state's usual settings)";
+    }
+  for (const auto& [name, settings] : first_language.declared_sampling)
+    if (sampling_why.empty()) {
+      sampling = settings;
+      sampling_why = "as the original's sampler_state of '" + name + "'";
+    }
+  if (sampling_why.empty()) sampling_why = "as the original samples (the defaults)";
+  const auto sampling_entries = [&] {
+    return TomlEntries{{"filter", toml_string(to_string(sampling.mag_filter))}, {"address", toml_string(to_string(sampling.address_u))}};
+  };
   for (size_t i = 0; i < textures.size(); ++i) {
     if (common && i > 0) break;
     const auto& [language, samplers] = textures[i];
+    const bool port = language != first_language.language && !common;
     w.header(common ? "textures" : std::string("textures.") + to_string(language));
     for (const SamplerBinding& b : samplers) {
       if (b.kind == SamplerKind::sampler) {
-        w.commented(toml_entry(b.name, toml_inline_table({{"filter", toml_string("linear")}, {"address", toml_string("wrap")}})),
-                    "a guess: a sampler state's usual settings");
+        w.commented(toml_entry(b.name, toml_inline_table(sampling_entries())),
+                    port ? sampling_why : "a guess: a sampler state's usual settings");
         continue;
       }
       if (b.cube) {
@@ -234,7 +286,11 @@ CaseDraft draft_case(const std::vector<SurveyedLanguage>& languages, const std::
       if (image.empty())
         w.todo("# " + toml_entry(b.name, toml_inline_table({{"file", toml_string("FILE.png")}})),
                "bind texture '" + b.name + "' to an image file");
-      else
+      else if (port && b.kind == SamplerKind::combined) {
+        TomlEntries entries{{"file", toml_string(relative_to(root, image))}};
+        for (auto& entry : sampling_entries()) entries.push_back(std::move(entry));
+        w.commented(toml_entry(b.name, toml_inline_table(entries)), why + "; sampled " + sampling_why);
+      } else
         w.commented(toml_entry(b.name, toml_inline_table({{"file", toml_string(relative_to(root, image))}})), why);
     }
   }
@@ -244,7 +300,7 @@ CaseDraft draft_case(const std::vector<SurveyedLanguage>& languages, const std::
   std::string text = w.text();
   // The header asks for the TODOs only when there are some (same line count either way).
   if (w.todos().empty()) text.replace(text.find("check the TODOs."), 16, "check its guesses.");
-  return {std::move(text), w.todos()};
+  return {std::move(text), w.todos(), std::move(doubts)};
 }
 
 }  // namespace shaderbed

@@ -57,6 +57,7 @@ class CaseTomlWriter {
   void table(const CaseTable& table);
 
   const std::string& text() const { return text_; }
+  int next_line() const { return lines_ + 1; }   // the number the next line written gets
   const std::vector<std::string>& todos() const { return todos_; }
 
  private:

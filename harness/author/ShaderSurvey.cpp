@@ -69,6 +69,7 @@ Result<SurveyedLanguage> find_entries(Language language, const std::vector<Loade
     const EffectTechnique& t = effect->techniques.front();
     out.files.vertex = out.files.fragment = f.path;
     out.files.technique = t.name;
+    for (const EffectSampler& sampler : effect->samplers) out.declared_sampling.emplace_back(sampler.name, sampler.settings);
     out.files.pass = t.passes.empty() ? "" : t.passes.front().name;
     std::string others;
     for (size_t i = 1; i < effect->techniques.size(); ++i) others += (others.empty() ? "" : ", ") + effect->techniques[i].name;
@@ -127,6 +128,9 @@ void collect_reflection(SurveyedLanguage& out, const CompiledProgram& program, c
           }
         }
         u.declared_space = declared_space(text, m.name);
+        u.component_meanings = component_meanings(text, m.name);
+        if (u.component_meanings.empty())
+          u.component_meanings = component_meanings(&text == &vertex_text ? fragment_text : vertex_text, m.name);
         out.uniforms.push_back(std::move(u));
       }
     for (const SamplerBinding& s : module->reflection.samplers)

@@ -8,10 +8,12 @@
 // vertex inputs and the samplers.
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "author/BindingGuess.h"
 #include "compile/ShaderModule.h"
+#include "pipeline/SamplerSettings.h"
 #include "core/Error.h"
 #include "scene/CaseFile.h"
 
@@ -25,6 +27,9 @@ struct SurveyedLanguage {
   std::vector<UniformFacts> uniforms;  // both stages, each name once, in declaration order
   std::vector<StageInput> inputs;      // the vertex stage's
   std::vector<SamplerBinding> samplers;   // both stages, each name once
+  // A DX9 effect's `sampler_state { ... }` settings by sampler name: the runner samples
+  // with these, so a port must be given the same.
+  std::vector<std::pair<std::string, SamplerSettings>> declared_sampling;
 };
 
 // The language a shader file's extension says, or an error naming the file.

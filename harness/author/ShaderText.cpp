@@ -102,13 +102,14 @@ int declared_register(std::string_view view, std::string_view name) {
   return m.empty() ? -1 : std::stoi(m[1]);
 }
 
-SpaceHint declared_space(std::string_view view, std::string_view name) {
-  if (!identifier(name)) return SpaceHint::none;
-  const std::string text(view);
+namespace {
+
+// The declaration of `name` up to its end (';', or ',' / ')' in a parameter list), plus the
+// rest of that line: its annotation and its trailing comment. "" when there is none.
+std::string declaration_of(const std::string& text, std::string_view name) {
+  if (!identifier(name)) return "";
   const auto m = search(text, R"(\b[A-Za-z_]\w*\s+)" + std::string(name) + kArray + R"(\s*[:;=,<)])");
-  if (m.empty()) return SpaceHint::none;
-  // The declaration up to its end (';', or ',' / ')' in a parameter list), plus the rest
-  // of that line: its annotation and its trailing comment.
+  if (m.empty()) return "";
   const size_t begin = size_t(m.position(0));
   size_t end = text.find_first_of(";,)", begin + size_t(m.length(0)) - 1);
   if (end == std::string::npos) end = text.size();
@@ -120,10 +121,39 @@ SpaceHint declared_space(std::string_view view, std::string_view name) {
   }
   size_t line_end = text.find('\n', end);
   if (line_end == std::string::npos) line_end = text.size();
-  const std::string declaration = text.substr(begin, line_end - begin);
-  if (const auto a = search(declaration, R"(\bSpace\s*=\s*"(\w+)\")"); !a.empty()) return space_in("\"" + std::string(a[1]) + "\"");
+  return text.substr(begin, line_end - begin);
+}
+
+// The declaration's trailing comment, without the "//"; "" when it has none.
+std::string comment_of(const std::string& declaration) {
   const size_t comment = declaration.find("//");
-  return comment == std::string::npos ? SpaceHint::none : space_in(declaration.substr(comment));
+  return comment == std::string::npos ? "" : declaration.substr(comment + 2);
+}
+
+}  // namespace
+
+SpaceHint declared_space(std::string_view view, std::string_view name) {
+  const std::string declaration = declaration_of(std::string(view), name);
+  if (declaration.empty()) return SpaceHint::none;
+  if (const auto a = search(declaration, R"(\bSpace\s*=\s*"(\w+)\")"); !a.empty()) return space_in("\"" + std::string(a[1]) + "\"");
+  const std::string comment = comment_of(declaration);
+  return comment.empty() ? SpaceHint::none : space_in(comment);
+}
+
+std::vector<std::pair<std::string, std::string>> component_meanings(std::string_view view, std::string_view name) {
+  std::vector<std::pair<std::string, std::string>> out;
+  const std::string comment = comment_of(declaration_of(std::string(view), name));
+  // "rgb = colour, w = specular power"; "xyz: direction; w: 0 for directional".
+  static const std::regex piece(R"(^\s*\.?([xyzw]{1,4}|[rgba]{1,4})\s*[=:]\s*(.*\S)\s*$)");
+  size_t begin = 0;
+  while (begin <= comment.size()) {
+    size_t end = comment.find_first_of(",;", begin);
+    if (end == std::string::npos) end = comment.size();
+    const std::string part = comment.substr(begin, end - begin);
+    if (std::smatch m; std::regex_match(part, m, piece)) out.emplace_back(m[1], m[2]);
+    begin = end + 1;
+  }
+  return out;
 }
 
 std::optional<MatrixLayout> mul_order(std::string_view view, std::string_view name) {

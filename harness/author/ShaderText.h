@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "author/BindingGuess.h"
@@ -23,6 +24,10 @@ int declared_register(std::string_view text, std::string_view name);
 // The space an annotation (`string Space = "World";`) or the declaration's comment
 // ("// world space") names.
 SpaceHint declared_space(std::string_view text, std::string_view name);
+
+// What the declaration's trailing comment says its components mean:
+// `float4 SpecularColor; // rgb = colour, w = specular power` -> {{"rgb", "colour"}, {"w", "specular power"}}.
+std::vector<std::pair<std::string, std::string>> component_meanings(std::string_view text, std::string_view name);
 
 // mul(M, v) -> column_vector, mul(v, M) -> row_vector (casts such as (float3x3)M
 // allowed); the first mul() naming the matrix decides; nullopt when none does.

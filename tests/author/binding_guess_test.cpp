@@ -172,9 +172,9 @@ TEST(BindingGuess, AmbientMaterialAndLightColours) {
     EXPECT_EQ(guess(vec(name, 3)), "1,1,1") << name;
   EXPECT_EQ(guess(UniformFacts{.name = "padding"}), "0");
   const UniformGuess kd = guess_uniform(vec("Kd", 3), {});
-  ASSERT_TRUE(kd.parameter);
-  EXPECT_EQ(kd.parameter->name, "diffuse");
-  EXPECT_EQ(kd.parameter->value.size(), 3u);
+  ASSERT_EQ(kd.parameters.size(), 1u);
+  EXPECT_EQ(kd.parameters[0].name, "diffuse");
+  EXPECT_EQ(kd.parameters[0].value.size(), 3u);
 }
 
 TEST(BindingGuess, LegacyMatricesAreTheScenes) {
@@ -228,6 +228,56 @@ TEST(BindingGuess, EntryPointsByTheirOutputs) {
   EXPECT_EQ((*found)[2].stage, Stage::vertex);
   EXPECT_EQ(glsl_stage_of("void main() { gl_Position = vec4(0); }"), Stage::vertex);
   EXPECT_EQ(glsl_stage_of("out vec4 c; void main() { c = vec4(1); }"), Stage::fragment);
+}
+
+}  // namespace
+}  // namespace shaderbed
+
+namespace shaderbed {
+namespace {
+
+TEST(BindingGuess, ComponentMeaningsFromTheDeclarationsComment) {
+  const std::string text = "float4 SpecularColor;   // rgb = specular colour, w = specular power\nfloat4 Tint; // xyz: tint; a: opacity\n";
+  EXPECT_EQ(component_meanings(text, "SpecularColor"),
+            (std::vector<std::pair<std::string, std::string>>{{"rgb", "specular colour"}, {"w", "specular power"}}));
+  EXPECT_EQ(component_meanings(text, "Tint"), (std::vector<std::pair<std::string, std::string>>{{"xyz", "tint"}, {"a", "opacity"}}));
+}
+
+TEST(BindingGuess, UnsureGuessesCarryTheirAlternative) {
+  UniformFacts spec{.name = "SpecularColor", .vecsize = 4};
+  const UniformGuess bare = guess_uniform(spec, {.language = Language::hlsl});
+  EXPECT_TRUE(bare.unsure()) << "w = 1 without a comment is a doubt";
+  ASSERT_EQ(bare.alternatives.size(), 1u);
+  EXPECT_EQ(bare.alternatives[0].sources[1].name, "power");
+  spec.component_meanings = {{"w", "specular power"}};
+  const UniformGuess said = guess_uniform(spec, {.language = Language::hlsl});
+  EXPECT_FALSE(said.unsure());
+  EXPECT_EQ(said.sources[1].name, "power");
+
+  UniformFacts matrix{.name = "g_World", .vecsize = 4, .columns = 4};
+  const UniformGuess columns = guess_uniform(matrix, {.language = Language::hlsl});
+  EXPECT_EQ(columns.doubt_group, "matrices");
+  EXPECT_EQ(columns.alternatives.at(0).layout, MatrixLayout::row_vector);
+  matrix.mul_order = MatrixLayout::column_vector;
+  EXPECT_FALSE(guess_uniform(matrix, {.language = Language::hlsl}).unsure()) << "a mul() settles it";
+
+  const UniformGuess light = guess_uniform({.name = "g_LightPos", .vecsize = 4}, {.language = Language::hlsl});
+  EXPECT_TRUE(light.unsure());
+  EXPECT_EQ(light.alternatives.at(0).sources.at(0).name, "light_vector");
+  EXPECT_FALSE(guess_uniform({.name = "lightPos", .vecsize = 3}, {.language = Language::glsl}).unsure())
+      << "a float3 position has no w to doubt";
+}
+
+TEST(BindingGuess, UnityNamesAndScaleFactors) {
+  const UniformGuess unity = guess_uniform({.name = "_WorldSpaceLightPos0", .vecsize = 4}, {.language = Language::hlsl});
+  EXPECT_EQ(unity.sources.at(0).name, "light_vector_world");
+  EXPECT_EQ(guess_uniform({.name = "unity_ObjectToWorld", .vecsize = 4, .columns = 4}, {}).sources.at(0).name, "world");
+  EXPECT_EQ(guess_uniform({.name = "unity_WorldToObject", .vecsize = 4, .columns = 4}, {}).sources.at(0).name, "world_inverse");
+  EXPECT_EQ(guess_uniform({.name = "UNITY_MATRIX_MVP", .vecsize = 4, .columns = 4}, {}).sources.at(0).name, "transform");
+  const UniformGuess debug = guess_uniform({.name = "u_ScaleFGDSpec", .vecsize = 3}, {.language = Language::glsl});
+  ASSERT_EQ(debug.sources.size(), 1u);
+  EXPECT_EQ(debug.sources[0].literal, (std::vector<double>{1.0, 1.0, 1.0}));
+  EXPECT_EQ(guess_uniform({.name = "_Color", .vecsize = 4}, {}).sources.at(0).name, "diffuse");
 }
 
 }  // namespace

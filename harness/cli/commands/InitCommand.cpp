@@ -1,6 +1,5 @@
 // `shaderbed init SHADER...`: a first case file for your own shaders (author/CaseDraft.h),
 // then one run of it, and what still needs you.
-#include <unistd.h>
 
 #include <filesystem>
 #include <map>
@@ -12,11 +11,10 @@
 
 #include "author/CaseDraft.h"
 #include "author/ShaderSurvey.h"
+#include "cli/commands/InitGuessCheck.h"
 #include "cli/commands/Command.h"
 #include "core/AtomicFile.h"
-#include "core/ThisExecutable.h"
 #include "core/WritablePath.h"
-#include "report/ConsoleProgress.h"
 #include "report/ConsoleReport.h"
 #include "run/Runner.h"
 
@@ -39,42 +37,34 @@ int bad_input(const std::string& message) {
   return kExitBadInput;
 }
 
-// The run's errors, each distinct message once (a missing binding errors every cell alike).
+// The run's errors, each distinct message once (a missing binding errors every cell alike;
+// a blank original errors them with each shape's pixel counts after the first ';').
 std::vector<std::string> distinct_errors(const RunReport& report) {
   std::vector<std::string> out;
   std::set<std::string> seen;
   for (const CellResult& cell : report.results)
-    if (cell.status == CellStatus::error && seen.insert(cell.message).second)
+    if (cell.status == CellStatus::error && seen.insert(cell.language + cell.message.substr(0, cell.message.find(';'))).second)
       out.push_back(cell.language + ": " + cell.message);
   return out;
 }
 
-// Runs the new case once, small; prints its summary. The problems it found, for the list.
-std::vector<std::string> check_run(const std::string& case_path, int size) {
-  RunOptions options;
-  options.select.cases = {case_path};
-  options.cell.size = size;
-  options.cell.timing = {.warmup = 0, .runs = 0};
-  options.workers.worker_binary = this_executable().string();   // the user's shaders: a crash costs cells, not the command
-  ConsoleProgress progress(stderr, isatty(STDERR_FILENO), false);
-  options.on_cell = [&](size_t done, size_t total, const CellResult& cell) { progress.update(done, total, cell); };
-  auto report = run_suite(options);
-  if (!report) return {"the case does not load yet: " + report.error().to_string()};
-  print_console_report(*report, stdout);
-  std::vector<std::string> problems = distinct_errors(*report);
-  // Failures, per language and attribution: "glsl: 16 cells differ (port: ...)".
+// Failures, per language and attribution: "glsl: 16 cells failed (port: ...)". While a
+// guess is unconfirmed the run's attribution is no verdict: the cells say so instead.
+std::vector<std::string> failures(const RunReport& report, bool unconfirmed) {
   std::map<std::string, std::pair<int, std::string>> failed;
-  for (const CellResult& cell : report->results)
-    if (cell.status == CellStatus::fail) {
+  for (const CellResult& cell : report.results)
+    if (cell.status == CellStatus::fail && !cell.known_failure) {
       auto& [count, why] = failed[cell.language];
       ++count;
       if (why.empty() && !cell.attribution.empty()) why = cell.attribution + ": " + cell.attribution_reason;
     }
+  std::vector<std::string> out;
   for (const auto& [language, entry] : failed)
-    problems.push_back(language + ": " + std::to_string(entry.first) + " cell" + (entry.first == 1 ? "" : "s") +
-                       " failed" + (entry.second.empty() ? "" : " (" + entry.second + ")") +
-                       "; check its bindings and attributes");
-  return problems;
+    out.push_back(language + ": " + std::to_string(entry.first) + " cell" + (entry.first == 1 ? "" : "s") + " failed" +
+                  (unconfirmed || entry.second.empty() ? "" : " (" + entry.second + ")") +
+                  (unconfirmed ? "; no verdict on the port until the bindings above are checked"
+                               : "; check its bindings and attributes"));
+  return out;
 }
 
 int run_init(const InitArguments& args) {
@@ -96,22 +86,57 @@ int run_init(const InitArguments& args) {
 
   auto languages = survey_shaders(args.shaders, forced);
   if (!languages) return bad_input(languages.error().to_string());
-  const CaseDraft draft = draft_case(*languages, out, images_in(fs::absolute(first).parent_path().string()));
-  if (auto ok = write_file_atomically(out, draft.text, "case file"); !ok) return bad_input(ok.error().to_string());
-  fmt::print("wrote {}\n", out);
-
-  std::vector<std::string> problems;
-  if (!args.no_run) {
-    fmt::print("checking it: shaderbed run --case {} --size {}\n", out, args.size);
-    std::fflush(stdout);
-    problems = check_run(out, args.size);
+  const std::vector<std::string> images = images_in(fs::absolute(first).parent_path().string());
+  if (args.no_run) {
+    const CaseDraft draft = draft_case(*languages, out, images);
+    if (auto ok = write_file_atomically(out, draft.text, "case file"); !ok) return bad_input(ok.error().to_string());
+    fmt::print("wrote {}\n", out);
+    if (draft.todos.empty()) {
+      fmt::print("\nnothing left to guess (not run: --no-run)\n");
+      return 0;
+    }
+    fmt::print("\nstill needs you ({}):\n", out);
+    for (const std::string& todo : draft.todos) fmt::print("  TODO {}\n", todo);
+    return kExitFail;
   }
-  if (draft.todos.empty() && problems.empty()) {
-    fmt::print("\nnothing left to guess{}\n", args.no_run ? " (not run: --no-run)" : ": every cell ran");
+
+  fmt::print("wrote {}\nchecking it: shaderbed run --case {} --size {}\n", out, out, args.size);
+  std::fflush(stdout);
+  auto check = check_guesses({.languages = *languages, .case_path = out, .images = images, .size = args.size});
+  if (!check) return bad_input(check.error().to_string());
+  const bool unconfirmed = !check->check_first.empty();
+  std::vector<std::string> problems;
+  if (check->report) {
+    RunReport shown = *check->report;
+    // No verdict against the port while init's own guesses may be what differs.
+    if (unconfirmed)
+      for (CellResult& cell : shown.results)
+        if (cell.status == CellStatus::fail && !cell.attribution.empty()) {
+          cell.attribution = "unconfirmed bindings";
+          cell.attribution_reason = "init's guesses are not confirmed: check these bindings first (listed below)";
+        }
+    print_console_report(shown, stdout);
+    problems = distinct_errors(*check->report);
+    for (std::string& f : failures(*check->report, unconfirmed)) problems.push_back(std::move(f));
+  } else {
+    problems.push_back("the case does not load yet: " + check->load_error);
+  }
+  if (!check->changed.empty()) {
+    fmt::print("\ninit's check changed {} of its guesses ({}):\n", check->changed.size(), out);
+    for (const std::string& c : check->changed) fmt::print("  {}\n", c);
+  }
+  for (const std::string& t : check->tried) fmt::print("  tried: {}\n", t);
+  if (problems.empty() && check->draft.todos.empty()) {
+    fmt::print("\nnothing left to guess: every cell ran and passed\n");
     return 0;
   }
   fmt::print("\nstill needs you ({}):\n", out);
-  for (const std::string& todo : draft.todos) fmt::print("  TODO {}\n", todo);
+  if (unconfirmed) {
+    fmt::print("  check these bindings first:\n");
+    for (const std::string& line : check->check_first) fmt::print("    {}\n", line);
+  } else {
+    for (const std::string& todo : check->draft.todos) fmt::print("  TODO {}\n", todo);
+  }
   for (const std::string& problem : problems) fmt::print("  run: {}\n", problem);
   return kExitFail;
 }
