@@ -371,6 +371,11 @@ RunReport read_report(const json& j) {
     }
   }
   read(j, "run_id", "", report.run_id);
+  if (const json* cases = object_at(j, "cases", ""))
+    for (const auto& [name, digest] : cases->items()) {
+      if (!digest.is_string()) throw BadField{"/cases/" + name, "expected a string digest, found " + digest.dump()};
+      report.case_digests[name] = digest.get<std::string>();
+    }
   read(j, "shard", "", report.shard);
   if (const json* incomplete = object_at(j, "incomplete", "")) {
     Interruption& i = report.interruption.emplace();
@@ -407,6 +412,8 @@ ojson report_json(const RunReport& report) {
   j["schema"] = kResultsSchemaVersion;
   j["tool"] = json_tools(report.tools);
   j["run_id"] = report.run_id;
+  j["cases"] = ojson::object();
+  for (const auto& [name, digest] : report.case_digests) j["cases"][name] = digest;
   j["shard"] = report.shard;
   if (report.interruption)
     j["incomplete"] = {{"signal", report.interruption->signal}, {"reason", report.interruption->reason}};

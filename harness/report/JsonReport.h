@@ -13,6 +13,7 @@ namespace shaderbed {
 // {"schema": 2,
 //  "tool": {"glslang", "spirv_tools", "spirv_cross", "llvm", "mesa": {"vulkan", "gl"}},
 //  "run_id": "...", "shard": "I/N" or "", "out_dir": "...", "wall_ms": 1234.5, "workers": 2,
+//  "cases": {"phong": "<hex digest of its case file>", ...},
 //  "incomplete": {"signal": 2, "reason": "interrupted by SIGINT after 120 of 1400 cells"},   (only when so)
 //  "totals": {"cells", "pass", "fail", "known", "error", "skipped"},        (derived; ignored on read)
 //  "results": [{

@@ -191,10 +191,14 @@ struct Interruption {
 
 struct RunReport {
   ToolVersions tools;
-  // Which run the results belong to: a hash of the selected case files' text and the options
-  // that decide the cells and their images (not the shard), so the shards of one run share
-  // it and `merge` refuses results of different runs. "" in files from before it existed.
+  // Which run the results belong to: a hash of the options that decide the pixels and the
+  // verdicts and of the compilers, not of the cell filters or the shard, so the jobs of a CI
+  // matrix and the shards of a run share it and `merge` refuses results of different runs.
+  // "" in files from before it existed.
   std::string run_id;
+  // Each selected case's name -> hex FNV-1a 64 of its case file: two parts that ran one
+  // case must have read the same file.
+  std::map<std::string, std::string> case_digests;
   std::optional<Interruption> interruption;   // set when the run did not finish
   std::optional<CacheUse> cache;    // absent in merged reports and in files from before it existed
   std::vector<CellResult> results;

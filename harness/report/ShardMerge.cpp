@@ -21,6 +21,24 @@ std::pair<int, int> shard_of(const std::string& text) {
   return {index, count};
 }
 
+// The first tool of `part` whose version differs from `merged`'s (both known), or "". A GL-only
+// job knows no Vulkan driver, so a version only one side has is no difference; it joins.
+std::string join_tools(ToolVersions& merged, const ToolVersions& part) {
+  const std::pair<const char*, std::string ToolVersions::*> tools[] = {
+      {"glslang", &ToolVersions::glslang},           {"SPIRV-Tools", &ToolVersions::spirv_tools},
+      {"SPIRV-Cross", &ToolVersions::spirv_cross},   {"the Vulkan driver", &ToolVersions::vulkan_driver},
+      {"the GL driver", &ToolVersions::gl_driver},   {"LLVM", &ToolVersions::llvm},
+      {"the Vulkan device", &ToolVersions::vulkan_device}};
+  for (const auto& [name, field] : tools) {
+    std::string& have = merged.*field;
+    const std::string& other = part.*field;
+    if (other.empty()) continue;
+    if (have.empty()) have = other;
+    else if (have != other) return fmt::format("{} is {} here, {} in the files before it", name, other, have);
+  }
+  return "";
+}
+
 }  // namespace
 
 Result<RunReport> merge_shards(std::vector<RunReport> parts, const std::vector<std::string>& paths) {
@@ -38,10 +56,17 @@ Result<RunReport> merge_shards(std::vector<RunReport> parts, const std::vector<s
     if (!part.run_id.empty()) {
       if (merged.run_id.empty()) merged.run_id = part.run_id;
       else if (merged.run_id != part.run_id)
-        return bad(fmt::format("run {} is not the run of the files before it ({}): different cases, options or "
-                               "case files; merge the shards of one run",
+        return bad(fmt::format("run {} is not the run of the files before it ({}): another image size, mesh density, precision, reference, --param or "
+                               "compiler; merge the results of one run",
                                part.run_id, merged.run_id));
     }
+    for (const auto& [name, digest] : part.case_digests)
+      if (const auto [it, added] = merged.case_digests.emplace(name, digest); !added && it->second != digest)
+        return bad(fmt::format("case {} was read from another case file than in the files before it (digest {}, "
+                               "before {}); merge the results of one run",
+                               name, digest, it->second));
+    if (const std::string differs = join_tools(merged.tools, part.tools); !differs.empty())
+      return bad(fmt::format("another toolchain: {}; merge the results of one run", differs));
     if (const auto [index, count] = shard_of(part.shard); count > 0) {
       if (shard_count && count != shard_count)
         return bad(fmt::format("shard {} is one of {}, the files before it of {}", part.shard, count, shard_count));
@@ -50,7 +75,6 @@ Result<RunReport> merge_shards(std::vector<RunReport> parts, const std::vector<s
         return bad(fmt::format("shard {} is also in {}", part.shard, it->second));
     }
     if (part.interruption) interrupted.push_back(path + ": " + part.interruption->reason);
-    if (merged.results.empty()) merged.tools = part.tools;
     merged.wall_ms += part.wall_ms;
     for (CellResult& r : part.results) {
       if (!seen.insert(r.id()).second) return bad("cell " + r.id() + " is already in an earlier file");

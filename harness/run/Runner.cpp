@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <mutex>
 #include <optional>
 #include <thread>
@@ -13,8 +14,10 @@
 
 #include "backends/MesaEnvironment.h"
 #include "compile/CompileCache.h"
+#include "compile/ToolVersions.h"
 #include "core/BoundedFile.h"
 #include "core/CacheSettings.h"
+#include "core/ClosestName.h"
 #include "core/Elapsed.h"
 #include "core/Fnv1a.h"
 #include "run/ReferenceKinds.h"
@@ -39,13 +42,17 @@ Result<std::vector<Case>> select_cases(const RunOptions& o) {
   auto selected = load_selected_cases(s.cases_dir.empty() ? default_cases_dir() : s.cases_dir, s.cases);
   if (!selected) return std::unexpected(selected.error());
   std::vector<Case> cases = std::move(*selected);
-  for (Case& c : cases) complete_case(c);
+  for (Case& c : cases)
+    if (auto ok = complete_case(c); !ok) return std::unexpected(ok.error());
   if (auto ok = apply_parameter_overrides(s.params, s.cases, cases); !ok) return std::unexpected(ok.error());
   // An unknown model is bad input in the case file, not an error in every one of its cells.
   for (const Case& c : cases)
     if (!c.differential() && !is_reference_model(c.model)) {
-      const std::string known = fmt::format("{}", fmt::join(reference_model_names(), ", "));
-      return std::unexpected(Error{.message = "unknown model '" + c.model + "' (models: " + known + ")", .file = c.path,
+      const std::vector<std::string> models = reference_model_names();
+      const std::string near = closest_name(c.model, std::vector<std::string_view>(models.begin(), models.end()));
+      const std::string known = near.empty() ? fmt::format("models: {}", fmt::join(models, ", "))
+                                             : fmt::format("did you mean '{}'?", near);
+      return std::unexpected(Error{.message = "unknown model '" + c.model + "' (" + known + ")", .file = c.path,
                                    .line = c.model_line, .stage = ErrorStage::case_file});
     }
   std::vector<std::string> variant_names;
@@ -175,17 +182,25 @@ Result<std::unique_ptr<SuitePlan>> plan_suite(const RunOptions& o) {
 
 namespace {
 
-// Which run the results belong to: the selected case files' text and every option that
-// decides the cells and their images, but not the shard, so a run's shards share it.
-std::string run_identity(const RunOptions& o, const SuitePlan& plan) {
+// Which run the results belong to: what decides the pixels and the verdicts (image size,
+// mesh density, precision, reference, --param overrides, the compilers), never which cells
+// were selected, so the jobs of a CI matrix (one --backend x --lang each) and the shards of
+// a run share it. The case files' own text is compared per case (RunReport::case_digests).
+std::string run_identity(const RunOptions& o) {
   const CellSettings& cell = o.cell;
-  std::string text = fmt::format("size {} warmup {} runs {} slices {} relaxed {} per-pixel {} against {}|", cell.size,
-                                 cell.timing.warmup, cell.timing.runs, cell.mesh_slices, cell.relaxed_precision,
-                                 cell.per_pixel_reference, cell.against_dir);
-  for (const auto* list : {&o.select.variants, &o.select.backends, &o.select.languages, &o.select.shapes, &o.select.params})
-    text += fmt::format("{}|", fmt::join(*list, ","));
-  for (const Case& c : plan.cases) text += c.name + "\n" + read_bounded_file(c.path, "case file", ErrorStage::case_file).value_or("") + "|";
+  const CompilerVersions compilers = compiler_versions();
+  const std::string text =
+      fmt::format("size {} slices {} relaxed {} per-pixel {} against {}|params {}|{} {} {}", cell.size,
+                  cell.mesh_slices, cell.relaxed_precision, cell.per_pixel_reference, cell.against_dir,
+                  fmt::join(o.select.params, ","), compilers.glslang, compilers.spirv_tools, compilers.spirv_cross);
   return hex64(fnv1a64(text));
+}
+
+std::map<std::string, std::string> case_digests(const std::vector<Case>& cases) {
+  std::map<std::string, std::string> digests;
+  for (const Case& c : cases)
+    digests[c.name] = hex64(fnv1a64(read_bounded_file(c.path, "case file", ErrorStage::case_file).value_or("")));
+  return digests;
 }
 
 }  // namespace
@@ -197,7 +212,8 @@ Result<RunReport> run_suite(const RunOptions& o) {
   if (!plan) return std::unexpected(plan.error());
 
   RunReport report;
-  report.run_id = run_identity(o, **plan);
+  report.run_id = run_identity(o);
+  report.case_digests = case_digests((*plan)->cases);
   report.out_dir = o.cell.out_dir;
   report.shard = o.select.shard;
   SceneSetup scene;

@@ -4,12 +4,14 @@
 #include <set>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "cli/commands/Command.h"
 #include "cli/commands/ReportOutputs.h"
 #include "run/Runner.h"
 #include "report/ConsoleReport.h"
 #include "report/JsonReport.h"
+#include "report/RunCoverage.h"
 #include "report/ShardMerge.h"
 
 namespace shaderbed {
@@ -46,6 +48,12 @@ Command add_merge_command(CLI::App& app) {
               return kExitBadInput;
             }
             RunReport& merged = *joined;
+            const RunCoverage coverage = run_coverage(merged);
+            fmt::print("merged {} file{}: {} cells of {} case{}\n", args->inputs.size(), args->inputs.size() == 1 ? "" : "s",
+                       merged.results.size(), coverage.cases, coverage.cases == 1 ? "" : "s");
+            for (const std::string& line : coverage.lines) fmt::print("  {}\n", line);
+            if (!coverage.holes.empty())
+              fmt::print("  no cells for {}: was a job of the matrix left out?\n", fmt::join(coverage.holes, ", "));
             print_console_report(merged, stdout, args->console);
             if (!args->outputs.write(merged)) return kExitFail;
             return merged.acceptable() ? 0 : kExitFail;
