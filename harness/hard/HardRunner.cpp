@@ -18,6 +18,7 @@
 #include "run/ProgramCache.h"
 #include "run/CellPlan.h"
 #include "run/ReferenceRender.h"
+#include "run/ReferenceKinds.h"
 #include "run/Runner.h"
 #include "compare/ImageComparison.h"
 #include "compare/ImageFiles.h"
@@ -125,7 +126,11 @@ Result<std::vector<Case>> select_cases(const HardOptions& o) {
   if (auto ok = check_names(o.languages, {"glsl", "hlsl", "cg"}, "language"); !ok) return std::unexpected(ok.error());
   if (auto ok = check_names(o.scenarios, scenario_names(), "scenario"); !ok) return std::unexpected(ok.error());
   if (o.size < 8 || o.size > 1024) return fail(ErrorStage::options, fmt::format("--size {} is outside 8..1024", o.size));
-  return load_selected_cases(o.cases_dir.empty() ? default_cases_dir() : o.cases_dir, o.cases);
+  auto cases = load_selected_cases(o.cases_dir.empty() ? default_cases_dir() : o.cases_dir, o.cases);
+  if (!cases) return cases;
+  for (Case& c : *cases)
+    if (auto ok = complete_case(c); !ok) return std::unexpected(ok.error());
+  return cases;
 }
 
 Image to_image(const ScenarioReference& r) {

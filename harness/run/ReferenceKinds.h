@@ -23,8 +23,10 @@ class ReferenceKinds {
   std::vector<std::unique_ptr<ReferenceKind>> kinds_;
 };
 
-// What the kinds add to a case once it is read (an SH model's default parameters).
-void complete_case(Case& c);
+// What the kinds add to a case once it is read: the model's default parameters (a library
+// model's, an SH model's) and, when the case states no [tolerance], the library case's
+// tolerances for its model. An error when the model has no library case to inherit from.
+Result<void> complete_case(Case& c);
 // The model names the kinds evaluate (the library's and SH's), for a case's `model`.
 bool is_reference_model(const std::string& model);
 std::vector<std::string> reference_model_names();

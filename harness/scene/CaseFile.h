@@ -134,6 +134,9 @@ struct Case {
   CaseLight light = CaseLight::model_default;
   std::optional<glm::dvec3> ambient;   // `ambient = [r, g, b]`: added to every model's output
   TextureTable textures;     // [textures]: image files and sampler settings by sampler name
+  // A model case without [tolerance]: run/ gives it the library case's for its model
+  // (complete_case), derived for the model's whole parameter range.
+  bool tolerance_from_model = false;
   Tolerance interior;        // pixels whose 3x3 neighbourhood is covered in the reference
   Tolerance silhouette;      // the one-pixel band around the reference's silhouette
   // LUT variants are compared with the analytic reference; max_abs < 0 means "derive

@@ -1,5 +1,6 @@
 // [tolerance]: the interior, silhouette, LUT and approximation thresholds, each with its
-// reason. A differential case that states none gets differential_*_tolerance() (CaseFile.cpp).
+// reason. A differential case that states none gets differential_*_tolerance() (CaseFile.cpp);
+// a model case that states none, its model's library case's (run/ReferenceKinds.h).
 #include "scene/CaseSections.h"
 
 #include <cmath>
@@ -43,7 +44,11 @@ Result<void> read_tolerance(const CaseDocument& doc, Case& c) {
     c.silhouette = differential_silhouette_tolerance();
     return {};
   }
-  if (!tol) return std::unexpected(at(path, root, "missing [tolerance] (interior and silhouette, each with a reason)"));
+  // A model case may leave them to the model's (run/ReferenceKinds.h complete_case).
+  if (!tol) {
+    c.tolerance_from_model = true;
+    return {};
+  }
   if (auto ok = check_keys(path, *tol, {"interior", "silhouette", "lut", "approximation"}, "[tolerance]"); !ok)
     return std::unexpected(ok.error());
   auto interior = tolerance(path, *tol, "interior");

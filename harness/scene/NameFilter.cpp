@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include "core/ClosestName.h"
+
 namespace shaderbed {
 
 bool wanted(const std::vector<std::string>& filter, const std::string& name) {
@@ -15,6 +17,8 @@ Result<void> check_names(const std::vector<std::string>& given, const std::vecto
     if (std::find(known.begin(), known.end(), g) == known.end()) {
       std::string list;
       for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+      const std::string near = closest_name(g, std::vector<std::string_view>(known.begin(), known.end()));
+      if (!near.empty()) return fail(ErrorStage::options, fmt::format("unknown {} '{}' (did you mean '{}'?)", what, g, near));
       return fail(ErrorStage::options, fmt::format("unknown {} '{}' (known: {})", what, g, list));
     }
   return {};

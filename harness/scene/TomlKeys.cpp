@@ -1,38 +1,14 @@
 #include "scene/TomlKeys.h"
 #include "core/BoundedFile.h"
+#include "core/ClosestName.h"
 
 #include <algorithm>
 #include <vector>
 
 namespace shaderbed {
-namespace {
-
-size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<size_t> row(b.size() + 1);
-  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (size_t i = 1; i <= a.size(); ++i) {
-    size_t diagonal = row[0];
-    row[0] = i;
-    for (size_t j = 1; j <= b.size(); ++j) {
-      const size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = up;
-    }
-  }
-  return row[b.size()];
-}
-
-}  // namespace
 
 std::string closest_key(std::string_view key, std::initializer_list<std::string_view> known) {
-  std::string best;
-  size_t best_distance = 0;
-  for (std::string_view k : known) {
-    const size_t d = edit_distance(key, k);
-    if (best.empty() || d < best_distance) best = std::string(k), best_distance = d;
-  }
-  // A third of the word may differ: "tolerence" -> "tolerance", not "mode" -> "model".
-  return best_distance <= std::max<size_t>(1, key.size() / 3) ? best : "";
+  return closest_name(key, std::vector<std::string_view>(known));
 }
 
 Result<toml::table> parse_toml_file(const std::string& path, ErrorStage stage) {

@@ -120,7 +120,7 @@ Result<SweepResult> run_sweep(const SweepOptions& o) {
   const std::string dir = o.cases_dir.empty() ? default_cases_dir() : o.cases_dir;
   auto cases = load_selected_cases(dir, {o.case_name});
   if (!cases) return std::unexpected(cases.error());
-  complete_case(cases->front());
+  if (auto ok = complete_case(cases->front()); !ok) return std::unexpected(ok.error());
   const Case* c = &cases->front();
   if (auto ok = check_axes(*c, o.axes); !ok) return std::unexpected(ok.error());
   std::vector<std::string> variant_names;

@@ -145,7 +145,6 @@ Frame CellRenderer::draw(const FrameRequest& request) {
   }
   probe_.prepare();   // its start-up overlaps the backend's, on the first frame
   Case c = with_parameters(*request.c, s);
-  complete_case(c);
   const auto finish = [&](Frame& f) -> Frame {
     f.frame_ms = ms_since(t0);
     return std::move(f);
@@ -156,6 +155,7 @@ Frame CellRenderer::draw(const FrameRequest& request) {
     frame.problem = std::move(e);
     return finish(frame);
   };
+  if (auto ok = complete_case(c); !ok) return failed(ok.error());
   const Variant* variant = find_variant(c, s.variant_name());
   if (!variant) return failed(Error{.message = "no variant '" + s.variant_name() + "'", .file = c.path, .stage = ErrorStage::case_file});
 
