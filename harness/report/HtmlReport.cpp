@@ -322,6 +322,8 @@ class Writer {
     }
     if (!r.lut_derivation.empty() || r.lut_bound != 0)
       row("LUT bound", fmt::format("{} &mdash; {}", sci(r.lut_bound), escape(r.lut_derivation)));
+    if (!r.texel_derivation.empty())
+      row("texel bound", fmt::format("{} &mdash; {}", sci(r.texel_bound), escape(r.texel_derivation)));
     if (r.sh)
       row("SH", fmt::format("{}; against the exact integral {} (the approximation's own {}{}), precompute {:.0f} ms, "
                             "{:.0f} bytes per vertex",

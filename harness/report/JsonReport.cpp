@@ -77,7 +77,8 @@ ojson cell_json(const CellResult& r) {
                        {"interior_rel", json_number(r.interior_threshold_rel)},
                        {"silhouette_rel", json_number(r.silhouette_threshold_rel)},
                        {"reason", r.tolerance_reason},
-                       {"lut", {{"bound", json_number(r.lut_bound)}, {"derivation", r.lut_derivation}}}};
+                       {"lut", {{"bound", json_number(r.lut_bound)}, {"derivation", r.lut_derivation}}},
+                       {"texels", {{"bound", json_number(r.texel_bound)}, {"derivation", r.texel_derivation}}}};
   if (r.sh)
     cell["sh"] = {{"summary", r.sh->summary},
                   {"render_vs_exact", json_number(r.sh->render_vs_exact)},
@@ -288,6 +289,10 @@ CellResult read_cell(const json& c, const std::string& p) {
     if (const json* lut = object_at(*t, "lut", tp)) {
       read(*lut, "bound", child(tp, "lut"), r.lut_bound);
       read(*lut, "derivation", child(tp, "lut"), r.lut_derivation);
+    }
+    if (const json* texels = object_at(*t, "texels", tp)) {
+      read(*texels, "bound", child(tp, "texels"), r.texel_bound);
+      read(*texels, "derivation", child(tp, "texels"), r.texel_derivation);
     }
   }
   if (const json* s = object_at(c, "sh", p)) {   // SH cases only

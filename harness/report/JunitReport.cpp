@@ -54,6 +54,7 @@ std::string details(const CellResult& r) {
     out += fmt::format("{} values: {} NaN, {} +Inf, {} -Inf, {} negative, {} above one\n", name, v->nan, v->pos_inf,
                        v->neg_inf, v->negative, v->above_one);
   if (!r.lut_derivation.empty()) out += fmt::format("LUT bound {} ({})\n", sci(r.lut_bound), r.lut_derivation);
+  if (!r.texel_derivation.empty()) out += fmt::format("texel bound {} ({})\n", sci(r.texel_bound), r.texel_derivation);
   if (!r.tolerance_reason.empty()) out += "tolerance: " + r.tolerance_reason + "\n";
   out += attribution(r) + "\n";
   for (const Explanation& e : r.explanations)

@@ -131,6 +131,8 @@ struct CellResult {
   std::vector<Explanation> explanations;
   double lut_bound = 0;             // LUT variants: the derived LUT error bound in the threshold
   std::string lut_derivation;
+  double texel_bound = 0;           // differential cells sampling 8-bit textures: the derived texel-step bound in it
+  std::string texel_derivation;
   // SH cases (harness/prt): the cell is judged against the truncated SH in double (the
   // shader's own error); against the exact lighting integral the error adds the
   // approximation's, which is bounded separately. Absent for other cases.

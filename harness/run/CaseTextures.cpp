@@ -1,6 +1,7 @@
 #include "run/CaseTextures.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "backends/TextureShape.h"
 #include "run/TextureFiles.h"
@@ -95,6 +96,26 @@ bool CaseTextures::flip_images_vertically() {
     flipped = true;
   }
   return flipped;
+}
+
+bool CaseTextures::step_texels(const std::string& name, int channel) {
+  const auto it = loaded_.find(name);
+  if (it == loaded_.end() || channel < 0 || channel > 3) return false;
+  if (it->second->format != TexelFormat::rgba8_unorm && it->second->format != TexelFormat::rgba8_srgb) return false;
+  Texture copy = *it->second;
+  std::vector<std::vector<float>*> levels{&copy.texels};
+  for (std::vector<float>& level : copy.mip_levels) levels.push_back(&level);
+  // Up everywhere unless a texel is at 255: then down, and up only where a texel is at 0.
+  bool at_top = false;
+  for (const std::vector<float>* level : levels)
+    for (size_t i = size_t(channel); i < level->size(); i += 4) at_top |= std::lround((*level)[i] * 255.0f) >= 255;
+  for (std::vector<float>* level : levels)
+    for (size_t i = size_t(channel); i < level->size(); i += 4) {
+      const long stored = std::lround((*level)[i] * 255.0f);
+      (*level)[i] = float(at_top && stored > 0 ? stored - 1 : stored + 1) / 255.0f;
+    }
+  it->second = std::make_shared<const Texture>(std::move(copy));
+  return true;
 }
 
 std::string CaseTextures::reference_note() const {

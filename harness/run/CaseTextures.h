@@ -40,6 +40,13 @@ class CaseTextures final : public TextureResolver {
   // counterfactual (compare/ConventionFit.h). False when no 2D file is bound.
   bool flip_images_vertically();
 
+  // After check(): channel `channel` of the 8-bit image file bound as `name` moved one
+  // stored step (1/255) on every texel of every level, up (down when a texel of that
+  // channel is at 255), as the shader would see the neighbouring value of the format: the
+  // original drawn so measures how far one step of the texel format moves the pixels
+  // (run/TexelStepBound.h). False when `name` is no 8-bit image file.
+  bool step_texels(const std::string& name, int channel);
+
   // After check(): "" when the draw reads no image file, else the note every report
   // carries for the cell: the reference models read no texture, so the files are not in
   // the reference (the case's parameters stand for them).

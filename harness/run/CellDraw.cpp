@@ -20,6 +20,8 @@ Result<DrawnCell> draw_cell(Backend& backend, const CellDraw& d) {
                         d.additions ? &d.additions->textures : nullptr);
   if (auto ok = textures.check(d.program); !ok) return std::unexpected(ok.error());
   if (d.flip_images && !textures.flip_images_vertically()) return fail(ErrorStage::counterfactual, "no image to flip");
+  if (d.texel_step && !textures.step_texels(d.texel_step->texture, d.texel_step->channel))
+    return fail(ErrorStage::counterfactual, "'" + d.texel_step->texture + "' is no 8-bit image file");
   drawn.texture_note = textures.reference_note();
 
   const Mesh& mesh = d.additions && d.additions->mesh ? *d.additions->mesh : d.mesh;

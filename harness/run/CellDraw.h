@@ -23,6 +23,12 @@ struct DrawAdditions {
   std::map<std::string, std::shared_ptr<const Texture>> textures;
 };
 
+// One channel of one 8-bit image file moved a stored step (CaseTextures::step_texels).
+struct TexelStep {
+  std::string texture;
+  int channel = 0;
+};
+
 struct CellDraw {
   const Case& c;
   Language language;
@@ -35,6 +41,7 @@ struct CellDraw {
   const NamedValues* values = nullptr;           // null: the scene's quantities and the case's parameters
   const BindingTable* bindings = nullptr;        // null: the case's for the language (a counterfactual's own)
   bool flip_images = false;                      // every 2D image file upside down (a counterfactual)
+  const TexelStep* texel_step = nullptr;         // one texture channel a step off (the texel bound's draws)
   TimingRequest timing{.warmup = 0, .runs = 0};
   std::optional<FillMode> fill;                  // the viewer's wireframe
   // Set: the case's bindings no variant reads become the drawn cell's warnings; the texts

@@ -12,6 +12,8 @@ void CellReference::judge(const Image&, CellResult&) const {}
 
 std::vector<Redrawn> CellReference::counterfactuals(GroupDrawer&) const { return {}; }
 
+std::optional<TexelStepBound> CellReference::texel_bound(GroupDrawer&) const { return std::nullopt; }
+
 Result<const DrawAdditions*> ReferenceKind::draw_inputs(const GroupScene&) { return nullptr; }
 
 }  // namespace shaderbed

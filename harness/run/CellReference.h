@@ -16,6 +16,7 @@
 #include "run/CellDraw.h"
 #include "run/CellPlan.h"
 #include "run/RunOptions.h"
+#include "run/TexelStepBound.h"
 #include "scene/CaseFile.h"
 #include "scene/Scene.h"
 
@@ -36,6 +37,7 @@ struct Variation {
   const SceneSetup* scene = nullptr;        // null: the group's
   const BindingTable* bindings = nullptr;   // null: the case's for the cell's language
   bool flip_images = false;                 // every 2D image file upside down
+  const TexelStep* texel_step = nullptr;    // one channel of one 8-bit image a stored step off
 };
 
 // The draws a reference may ask of whoever runs the group (the runner, the viewer).
@@ -83,6 +85,10 @@ class CellReference {
   // The reference again under each convention a port may get wrong, for the fits; asked
   // only when a cell failed.
   virtual std::vector<Redrawn> counterfactuals(GroupDrawer& drawer) const;
+  // What the group's 8-bit textures add to every cell's tolerance, when the reference is a
+  // render that samples them as the cells do (run/TexelStepBound.h); asked once per group
+  // before its cells are judged. Nothing: no such texture, or a reference that reads none.
+  virtual std::optional<TexelStepBound> texel_bound(GroupDrawer& drawer) const;
   // Whether a cell's note on the image files it reads applies (CaseTextures::reference_note):
   // a model reads no texture.
   virtual bool notes_textures() const = 0;

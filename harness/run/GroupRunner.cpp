@@ -53,8 +53,8 @@ struct Evidence {
 };
 
 struct Thresholds {
-  double interior = 0, silhouette = 0, interior_rel = 0, silhouette_rel = 0, lut_bound = 0;
-  std::string lut_derivation;
+  double interior = 0, silhouette = 0, interior_rel = 0, silhouette_rel = 0, lut_bound = 0, texel_bound = 0;
+  std::string lut_derivation, texel_derivation;
 };
 
 }  // namespace
@@ -84,7 +84,7 @@ struct GroupRunner::Impl final : GroupDrawer {
     area_ = areas_.at(mesh_key);
     const fs::path dir = settings_.out_dir.empty() ? fs::path() : fs::path(settings_.out_dir) / c.name / g.variant->name / g.shape;
 
-    thresholds_ = {c.interior.max_abs, c.silhouette.max_abs, c.interior.max_rel, c.silhouette.max_rel, 0, ""};
+    thresholds_ = {c.interior.max_abs, c.silhouette.max_abs, c.interior.max_rel, c.silhouette.max_rel, 0, 0, "", ""};
     group_lut_ = prepare_lut(g, shape, thresholds_);
     const std::string scene_hash = scene_fingerprint(c, mesh_key);
 
@@ -97,6 +97,14 @@ struct GroupRunner::Impl final : GroupDrawer {
     const std::unique_ptr<CellReference> reference = references_.prepare(group, *this);
     const double reference_ms = ms_since(t0);
     notes_textures_ = reference->notes_textures();
+    // A render reference that samples 8-bit textures widens every cell's bound by what one
+    // filter rounding of them can move a pixel (on top of the fp32 one, as a LUT's bound).
+    if (auto texels = reference->texel_bound(*this)) {
+      thresholds_.interior += texels->interior;
+      thresholds_.silhouette += texels->silhouette;
+      thresholds_.texel_bound = texels->interior;
+      thresholds_.texel_derivation = texels->derivation;
+    }
     const Mesh& mesh = additions_ && additions_->mesh ? *additions_->mesh : shape;
     const ReferenceSource source = reference->source();
     const Result<ReferenceImage>* group_image = reference->group_image();
@@ -114,6 +122,7 @@ struct GroupRunner::Impl final : GroupDrawer {
       if (auto drawn = reference->take_drawn(i)) {   // drawn already, as the reference
         r = std::move(drawn->result);
         image = std::move(drawn->image);
+        apply_thresholds(r);   // drawn before the texel bound was known
         r.reference.is_reference = true;
       } else if (!additions) {   // the reference's inputs failed: its error, not a binding error, in every cell
         image = std::unexpected(additions.error());
@@ -158,15 +167,21 @@ struct GroupRunner::Impl final : GroupDrawer {
     const CellGroup& g = *group_;
     CellResult r{.case_name = g.c->name, .variant = g.variant->name, .language = to_string(cell.language),
                  .backend = cell.backend->name, .path = to_string(cell.path), .shape = g.shape};
+    r.tolerance_reason = g.c->interior.reason;
+    apply_thresholds(r);
+    r.reference = source;
+    return r;
+  }
+
+  void apply_thresholds(CellResult& r) const {
     r.interior_threshold = thresholds_.interior;
     r.silhouette_threshold = thresholds_.silhouette;
     r.interior_threshold_rel = thresholds_.interior_rel;
     r.silhouette_threshold_rel = thresholds_.silhouette_rel;
-    r.tolerance_reason = g.c->interior.reason;
     r.lut_bound = thresholds_.lut_bound;
     r.lut_derivation = thresholds_.lut_derivation;
-    r.reference = source;
-    return r;
+    r.texel_bound = thresholds_.texel_bound;
+    r.texel_derivation = thresholds_.texel_derivation;
   }
 
   // Compiles, binds and draws one cell of `variant`; fills r's compile and draw parts.
@@ -202,6 +217,7 @@ struct GroupRunner::Impl final : GroupDrawer {
                            .additions = additions_,
                            .bindings = variation.bindings,
                            .flip_images = variation.flip_images,
+                           .texel_step = variation.texel_step,
                            .timing = timing,
                            .other_sources = warn_unused ? &other_sources(c, variant, cell.language) : nullptr};
     step("draw");

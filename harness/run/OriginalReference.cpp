@@ -1,3 +1,5 @@
+#include <deque>
+
 #include <fmt/format.h>
 
 #include "run/CaseUniforms.h"
@@ -67,6 +69,35 @@ class OriginalReference final : public CellReference {
   std::optional<DrawnReferenceCell> take_drawn(size_t index) override {
     if (index_ != index || !drawn_) return std::nullopt;
     return std::exchange(drawn_, std::nullopt);
+  }
+
+  // The original drawn with each channel of each 8-bit image file it samples a stored step
+  // off, one draw each: how far one step of the texel format moves its pixels.
+  std::optional<TexelStepBound> texel_bound(GroupDrawer& drawer) const override {
+    const CellGroup& group = g_.group;
+    if (!image_ || !group.reference_cell) return std::nullopt;
+    std::vector<std::pair<std::string, int>> steps;
+    for (const auto& [name, entry] : group.c->textures.for_language(group.reference_cell->language)) {
+      if (entry.files.empty()) continue;
+      SamplerSettings settings = entry.settings.applied_to({});
+      // Generated or stored levels may be blended: count the mip lerp unless the entry says otherwise.
+      if (entry.mipmaps && !entry.settings.mip_filter) settings.mip_filter = MipFilter::linear;
+      if (const int n = filter_rounding_steps(settings); n > 0) steps.emplace_back(name, n);
+    }
+    std::deque<Image> images;
+    std::vector<SteppedDraw> draws;
+    for (const auto& [name, n] : steps)
+      for (int channel = 0; channel < 4; ++channel) {
+        const TexelStep step{name, channel};
+        CellResult scratch = drawer.row(*group.reference_cell, {});
+        auto image = drawer.draw(*group.reference_variant, *group.reference_cell, {.warmup = 0, .runs = 1}, scratch,
+                                 {.texel_step = &step});
+        if (!image) break;   // not an 8-bit image file: its other channels are not either
+        images.push_back(std::move(*image));
+        draws.push_back({name, channel, &images.back()});
+      }
+    if (draws.empty()) return std::nullopt;
+    return texel_step_bound(*image_, classify_pixels(*image_), draws, steps);
   }
 
   // The original drawn again with the light negated, its matrices transposed, its images
