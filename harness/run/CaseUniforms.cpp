@@ -5,7 +5,10 @@
 #include <optional>
 #include <set>
 
+#include <fmt/format.h>
+
 #include "compile/LegacyGlsl.h"
+#include "core/ClosestName.h"
 
 namespace shaderbed {
 namespace {
@@ -178,6 +181,21 @@ NamedValues bindable_values(const SceneSetup& scene, const Case& c) {
   SceneSetup s = scene;
   if (c.ambient) s.lights.ambient = *c.ambient;
   return bindable_values(s, c.params);
+}
+
+Result<void> check_binding_names(const Case& c) {
+  const NamedValues values = bindable_values(SceneSetup{}, c);
+  std::vector<std::string_view> known{"lut"};
+  for (const auto& [name, v] : values) known.push_back(name);
+  for (const auto& [language, table] : c.bindings)
+    for (const auto& [uniform, binding] : table)
+      for (const BindingSource& source : binding.sources)
+        if (!source.name.empty() && std::find(known.begin(), known.end(), source.name) == known.end())
+          return std::unexpected(Error{
+              .message = fmt::format("[bindings.{}] {} = '{}': neither a scene quantity nor a parameter of the case{}",
+                                     to_string(language), uniform, source.name, did_you_mean(source.name, known)),
+              .file = c.path, .line = binding.line, .stage = ErrorStage::case_file});
+  return {};
 }
 
 }  // namespace shaderbed

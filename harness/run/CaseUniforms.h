@@ -49,4 +49,9 @@ NamedValues bindable_values(const SceneSetup& scene, const std::map<std::string,
 // The same for a case: its ambient colour (`ambient`) as "ambient_light", and its parameters.
 NamedValues bindable_values(const SceneSetup& scene, const Case& c);
 
+// Before anything is drawn: every name a binding reads is a scene quantity, a parameter of
+// the case or its LUT, so a typo is one error (exit 2) with "did you mean", not an error in
+// every cell. Names a reference kind adds to the draw (SH's) are the kind's to check.
+Result<void> check_binding_names(const Case& c);
+
 }  // namespace shaderbed

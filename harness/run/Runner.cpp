@@ -20,6 +20,8 @@
 #include "core/ClosestName.h"
 #include "core/Elapsed.h"
 #include "core/Fnv1a.h"
+#include "prt/ShCase.h"
+#include "run/CaseUniforms.h"
 #include "run/ReferenceKinds.h"
 #include "run/CellPlan.h"
 #include "run/Expectations.h"
@@ -35,6 +37,28 @@ namespace shaderbed {
 namespace fs = std::filesystem;
 namespace {
 
+
+// A shader file a selected cell needs and cannot find is one error before anything is
+// drawn (exit 2), not an error in every cell of it; the languages not selected may miss theirs.
+Result<void> check_shader_files(const std::vector<CellGroup>& groups) {
+  for (const CellGroup& g : groups) {
+    const auto check = [&](const Variant& v, Language language) -> Result<void> {
+      const auto it = v.shaders.find(language);
+      if (it == v.shaders.end()) return {};
+      for (const auto& [stage, file] : {std::pair{"vertex", &it->second.vertex}, {"fragment", &it->second.fragment}})
+        if (!file->empty() && !fs::exists(*file))
+          return std::unexpected(Error{.message = fmt::format("variant '{}': the {} {} shader {} does not exist", v.name,
+                                                              to_string(language), stage, *file),
+                                       .file = g.c->path, .line = it->second.line, .stage = ErrorStage::case_file});
+      return {};
+    };
+    for (const PlannedCell& cell : g.cells)
+      if (auto ok = check(*g.variant, cell.language); !ok) return ok;
+    if (g.reference_cell && g.reference_variant)
+      if (auto ok = check(*g.reference_variant, g.reference_cell->language); !ok) return ok;
+  }
+  return {};
+}
 
 // Reads the selected case files, applies --param overrides and checks every name filter.
 Result<std::vector<Case>> select_cases(const RunOptions& o) {
@@ -55,6 +79,9 @@ Result<std::vector<Case>> select_cases(const RunOptions& o) {
       return std::unexpected(Error{.message = "unknown model '" + c.model + "' (" + known + ")", .file = c.path,
                                    .line = c.model_line, .stage = ErrorStage::case_file});
     }
+  for (const Case& c : cases)
+    if (!is_sh_model(c.model))
+      if (auto ok = check_binding_names(c); !ok) return std::unexpected(ok.error());
   std::vector<std::string> variant_names;
   for (const Case& c : cases)
     for (const Variant& v : c.variants)
@@ -173,6 +200,7 @@ Result<std::unique_ptr<SuitePlan>> plan_suite(const RunOptions& o) {
   plan->groups = plan_cells(plan->cases, plan->backends, {s.variants, s.languages, s.shapes, s.backends});
   if (plan->groups.empty()) return fail(ErrorStage::options, "the filters select no cells");
   if (shard) plan->groups = select_shard(std::move(plan->groups), *shard);
+  if (auto ok = check_shader_files(plan->groups); !ok) return std::unexpected(ok.error());
   for (const CellGroup& g : plan->groups) plan->cells += g.cells.size();
   // Stored runs are checked (folder, manifest, image size) before anything is drawn.
   if (auto stored = load_stored_references(o.cell.against_dir, o.cell.size, plan->cases, {}); !stored)

@@ -29,6 +29,7 @@ import shutil
 import subprocess
 import sys
 import tempfile
+import time
 import tomllib
 
 SIZE = 32
@@ -134,13 +135,16 @@ def run_block(doc, line, block, source, binary, fixture):
                         subprocess.run([binary, "init", *originals, "--no-run"], cwd=work, env=env,
                                        capture_output=True, check=True)
                         prepared.add(w)
+        words[at] = binary   # `shaderbed` in the docs is the binary under test
         command = adapt(words, at)
+        started = time.monotonic()
         done = subprocess.run(command, cwd=work, env=env, capture_output=True, text=True, timeout=600)
+        seconds = time.monotonic() - started
         if done.returncode not in (0, 1):
             tail = "\n".join((done.stdout + done.stderr).strip().splitlines()[-8:])
             failures.append(f"{where}: `{text}` exited {done.returncode}:\n{tail}")
         else:
-            print(f"ok   {where}: {text}")
+            print(f"ok   {where}: {text}  ({seconds:.1f} s)")
     shutil.rmtree(home)
 
 

@@ -42,7 +42,8 @@ Command add_run_command(CLI::App& app) {
   cmd->add_option("--param", run.select.params,
                   "Override a case parameter: name=value or name=v1,v2,v3 (repeatable), e.g. --param power=20");
   cmd->add_option("--size", run.cell.size, "Image width and height in pixels")->capture_default_str();
-  cmd->add_option("--out", run.cell.out_dir, "Folder for renders, references and error images (EXR + PNG)");
+  cmd->add_option("--out", run.cell.out_dir,
+                  "Folder for renders, references and error images (EXR + PNG); default with --html: its folder");
   cmd->add_option("--save-images", run.cell.save_images_dir,
                   "Keep every drawn cell's render, exact (EXR: RGBA + coverage), with DIR/manifest.json (case, "
                   "variant, language, backend, path, shape, size, scene, toolchain, SPIR-V hashes), for later runs "
@@ -88,6 +89,8 @@ Command add_run_command(CLI::App& app) {
 
   return {cmd, [args] {
             if (!args->outputs.load_charts() || !args->outputs.check_writable()) return kExitBadInput;
+            // An HTML report shows the images: without --out they go beside index.html.
+            if (args->options.cell.out_dir.empty()) args->options.cell.out_dir = args->outputs.html;
             for (const auto& [folder, option] : {std::pair{args->options.cell.out_dir, "--out"},
                                                   std::pair{args->options.cell.save_images_dir, "--save-images"}})
               if (!folder.empty())
