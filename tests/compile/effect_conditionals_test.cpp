@@ -32,7 +32,8 @@ TEST(EffectConditionals, FollowsIfElifElseWithTheFilesOwnDefines) {
 
 TEST(EffectConditionals, AConditionItCannotEvaluateKeepsEveryBranchWithANote) {
   const std::string text = "#define F(x) x\n#if F(1)\na\n#else\nb\n#endif\n";
-  const std::vector<cg::Token> tokens = cg::lex(text);
+  std::vector<cg::Token> tokens = cg::lex(text);
+  cg::assign_positions(tokens, "t.fx");   // the lines the effect layer's messages use
   const ConditionalRegions regions = conditional_regions(tokens);
   EXPECT_EQ(kept(text), "a b");
   ASSERT_EQ(regions.notes.size(), 1u);
