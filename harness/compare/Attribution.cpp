@@ -76,6 +76,7 @@ const char* to_string(Attribution a) {
     case Attribution::driver: return "driver";
     case Attribution::model_reference: return "model/reference";
     case Attribution::matrix_convention: return "matrix convention";
+    case Attribution::reduced_precision: return "reduced precision";
     case Attribution::unclear: return "unclear";
   }
   return "unclear";
@@ -251,6 +252,17 @@ std::vector<Verdict> stage_verdicts(std::span<const RenderOutcome> renders, cons
     Verdict& v = verdicts[i];
     const auto same_language = select(renders, [&](const RenderOutcome& r) { return r.language == f.language; });
     const auto other_languages = select(renders, [&](const RenderOutcome& r) { return r.language != f.language; });
+
+    // Reduced precision: only the renders computed in the precision the shader asked for differ.
+    const auto failing_full = select(renders, [](const RenderOutcome& r) { return !r.pass && !r.reduced_precision; });
+    const auto passing_full = select(renders, [](const RenderOutcome& r) { return r.pass && !r.reduced_precision; });
+    if (f.reduced_precision && failing_full.empty() && !passing_full.empty()) {
+      v = {Attribution::reduced_precision,
+           fmt::format("{} on {} computes in reduced precision what the shader declares so (mediump, lowp); every "
+                       "render at full precision passes ({})",
+                       f.language, where(f), join_comma(places(passing_full, true)))};
+      continue;
+    }
 
     // Front end: this language fails everywhere, every other language passes everywhere.
     if (none_pass(same_language) && !other_languages.empty() && all_pass(other_languages)) {

@@ -11,6 +11,10 @@
 //    one thing they do not share: the reference (or the model it evaluates). When an
 //    expected area is given and the reference matches it while the agreeing renders do
 //    not, the reference is vindicated and the verdict is "unclear" instead.
+//  - "reduced precision": this render's path computes the shader's declared reduced
+//    precision (mediump, min16float, half) in reduced precision, every failing render
+//    of the group is such a one, and a render at full precision passes: the shader
+//    asked for it and one path gave it.
 //  - "front end": every render of L fails (on every backend and path) and every render
 //    of every other language passes.
 //  - "cross-compiler": P is the SPIRV-Cross path and every non-cross render of L passes
@@ -33,10 +37,19 @@
 
 namespace shaderbed {
 
-enum class Attribution { none, front_end, cross_compiler, driver, model_reference, matrix_convention, unclear };
+enum class Attribution {
+  none,
+  front_end,
+  cross_compiler,
+  driver,
+  model_reference,
+  matrix_convention,
+  reduced_precision,
+  unclear
+};
 
 // "", "front end", "cross-compiler", "driver", "model/reference", "matrix convention",
-// "unclear" (the strings CellResult::attribution holds).
+// "reduced precision", "unclear" (the strings CellResult::attribution holds).
 const char* to_string(Attribution);
 
 // One render of the group. Pass only renders that were compared ("pass" or "fail");
@@ -47,6 +60,9 @@ struct RenderOutcome {
   std::string path;       // "spirv", "glsl" (native), "cross"
   bool pass = false;
   const Image* image = nullptr;   // needed for the agreement test; null = unknown
+  // The path computes what the shader declares reduced precision in reduced precision
+  // (compile/GlslDialect.h says which path does).
+  bool reduced_precision = false;
 };
 
 struct Verdict {

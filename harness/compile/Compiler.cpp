@@ -51,21 +51,25 @@ Result<CompiledProgram> compile_program(const ProgramSource& source, bool with_o
   CompiledProgram out;
   out.language = source.language;
   // A DX9 effect becomes plain HLSL per stage (EffectFrontEnd.h); its pass's render
-  // states and sampler_state settings travel with the program to the draw.
+  // states, sampler_state settings and initial values travel with the program to the draw.
   Result<ProgramSource> rewritten = source;
   if (source.language == Language::hlsl)
-    rewritten = prepare_effect_program(source, out.render_state, out.sampler_settings);
+    rewritten = prepare_effect_program(source, out);
   if (!rewritten) return std::unexpected(rewritten.error());
   // GLSL written for GL (legacy built-ins, varyings matched by name) becomes GLSL that
   // glslang compiles and links by location (GlslDialect.h); the native GL path keeps the
   // author's text.
   std::map<std::string, std::string> legacy_names;
+  std::string native_vertex, native_fragment;
   if (source.language == Language::glsl) {
     auto glsl = prepare_glsl_program(source);
     if (!glsl) return std::unexpected(glsl.error());
     legacy_names = std::move(glsl->legacy_names);
     out.native_glsl_compatibility = glsl->compatibility;
     out.native_glsl_skip_reason = std::move(glsl->native_skip_reason);
+    out.native_glsl_reduced_precision = glsl->native_reduced_precision;
+    native_vertex = std::move(glsl->native_vertex);
+    native_fragment = std::move(glsl->native_fragment);
     rewritten = std::move(glsl->program);
   }
   const ProgramSource& p = *rewritten;
@@ -96,8 +100,8 @@ Result<CompiledProgram> compile_program(const ProgramSource& source, bool with_o
   out.vertex_cross_glsl = std::move(*vs);
   out.fragment_cross_glsl = std::move(*fs);
   if (p.language == Language::glsl) {
-    out.vertex_native_glsl = source.vertex.text;
-    out.fragment_native_glsl = source.fragment.text;
+    out.vertex_native_glsl = std::move(native_vertex);
+    out.fragment_native_glsl = std::move(native_fragment);
   }
   return out;
 }

@@ -2,10 +2,14 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
+#include <optional>
 #include <set>
 
 #include "compile/CgTokens.h"
+#include "compile/EffectConditionals.h"
 #include "compile/EffectStates.h"
 
 namespace shaderbed {
@@ -29,6 +33,33 @@ bool is_effect_sampler_type(const std::string& s) {
   return s == "sampler" || s == "sampler1D" || s == "sampler2D" || s == "sampler3D" || s == "samplerCUBE";
 }
 
+// "float3" -> 3, "half" -> 1, "float4x4" or "texture" -> 0 (no initial value is read).
+int numeric_components(const std::string& type) {
+  for (std::string_view base : {"float", "half", "double", "int", "uint", "bool", "min16float", "min10float",
+                                "min16int", "min16uint"}) {
+    if (!type.starts_with(base)) continue;
+    const std::string rest = type.substr(base.size());
+    if (rest.empty()) return 1;
+    if (rest.size() == 1 && rest[0] >= '1' && rest[0] <= '4') return rest[0] - '0';
+  }
+  return 0;
+}
+
+// One element of an initialiser, its tokens joined: "-0.5f" -> -0.5, "true" -> 1.
+std::optional<double> initial_number(const std::string& text) {
+  if (text == "true") return 1.0;
+  if (text == "false") return 0.0;
+  std::string number = text;
+  while (!number.empty() && std::string_view("fFhHlLuU").find(number.back()) != std::string_view::npos &&
+         number.find_first_of("xX") == std::string::npos)
+    number.pop_back();
+  if (number.empty()) return std::nullopt;
+  char* end = nullptr;
+  const double v = std::strtod(number.c_str(), &end);
+  if (end != number.c_str() + number.size() || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
 bool is_storage_qualifier(const Token& t) {
   return t.is_identifier() && (t.is("uniform") || t.is("static") || t.is("shared") || t.is("extern") ||
                                t.is("const") || t.is("volatile") || t.is("inline"));
@@ -45,6 +76,7 @@ class Parser {
  public:
   Parser(std::string_view text, const std::string& path) : text_(text), path_(path), tokens_(cg::lex(text)) {
     cg::assign_positions(tokens_, path);
+    hide_dropped_branches();
   }
 
   Result<EffectFile> parse() {
@@ -66,6 +98,16 @@ class Parser {
   }
 
  private:
+  // What an #if drops is not this effect's (EffectConditionals.h): the layer reads those
+  // tokens as it reads directives, not at all, and leaves them in the text for glslang's
+  // preprocessor to drop.
+  void hide_dropped_branches() {
+    ConditionalRegions regions = conditional_regions(tokens_);
+    for (std::size_t k = 0; k < tokens_.size(); ++k)
+      if (!regions.active[k]) tokens_[k].kind = TokenKind::directive;
+    for (EffectNote& note : regions.notes) out_.notes.push_back(std::move(note));
+  }
+
   Error error_at(const Token& t, std::string message) const {
     return Error{.message = std::move(message), .file = path_, .line = t.line, .stage = ErrorStage::compile};
   }
@@ -182,7 +224,7 @@ class Parser {
         return std::unexpected(error_at(type, "expected a name after '" + type.text + "'"));
       out_.textures.push_back({tokens_[type_at + 1].text, type.text, type.line});
       out_.notes.push_back({type.line, "texture '" + tokens_[type_at + 1].text +
-                                           "' declaration removed: the sampler that names it is what shaderbed binds"});
+                                           "' declaration removed: a case binds it by this name or by the sampler that names it"});
       remove(item.begin, item.end);
       return {};
     }
@@ -199,7 +241,46 @@ class Parser {
     }
     remove_annotations(item.begin, item.has_body ? item.body_open : item.end);
     if (item.has_body) remove_annotations(item.body_open, item.end);  // cbuffer members
+    if (!item.has_body) record_initial_value(item, type_at);
     return {};
+  }
+
+  // `type name [: semantic] = value;` of a global the application can set (not static
+  // or const), with a value of numbers: `0.5f`, `{0.04, 0.04, 0.04}`, `float3(1, 0, 0)`.
+  void record_initial_value(const Item& item, std::size_t type_at) {
+    for (std::size_t k = item.begin; k < type_at; ++k)
+      if (tokens_[k].is("static") || tokens_[k].is("const")) return;
+    const int components = numeric_components(tokens_[type_at].text);
+    if (components == 0 || type_at + 1 >= item.end || !tokens_[type_at + 1].is_identifier()) return;
+    std::vector<const Token*> rest;   // what follows the name, annotations and other hidden tokens left out
+    for (std::size_t k = type_at + 2; k < item.end; ++k)
+      if (!tokens_[k].removed && tokens_[k].kind != TokenKind::directive) rest.push_back(&tokens_[k]);
+    auto assign = std::ranges::find_if(rest, [](const Token* t) { return t->is("=") || t->is("[") || t->is(","); });
+    if (assign == rest.end() || !(*assign)->is("=")) return;   // no value, an array, or several names
+    std::vector<const Token*> value(assign + 1, rest.end());
+    if (!value.empty() && value.back()->is(";")) value.pop_back();
+    // Unwrap `{ ... }` or `floatN( ... )`.
+    if (value.size() >= 2 && value.front()->is("{") && value.back()->is("}")) {
+      value = {value.begin() + 1, value.end() - 1};
+    } else if (value.size() >= 3 && value.front()->is_identifier() && value[1]->is("(") && value.back()->is(")")) {
+      if (numeric_components(value.front()->text) != components) return;
+      value = {value.begin() + 2, value.end() - 1};
+    }
+    EffectInitialValue initial{.line = tokens_[type_at + 1].line};
+    std::string element;
+    for (std::size_t k = 0; k <= value.size(); ++k) {
+      if (k < value.size() && !value[k]->is(",")) {
+        element += value[k]->text;
+        continue;
+      }
+      const std::optional<double> v = initial_number(element);
+      if (!v) return;   // an expression: not something to read without a compiler
+      initial.values.push_back(*v);
+      element.clear();
+    }
+    if (initial.values.size() == 1 && components > 1) initial.values.assign(std::size_t(components), initial.values[0]);
+    if (initial.values.size() != std::size_t(components)) return;
+    out_.initial_values[tokens_[type_at + 1].text] = std::move(initial);
   }
 
   void record_function(const Item& item, std::size_t type_at) {

@@ -8,7 +8,8 @@
 //
 // Read from the author's file as written (no preprocessing, so a warm run starts no
 // compiler): `#include`s and macros stay for glslang; a macro inside a technique block
-// or a technique under #if is not expanded or judged (both branches are read).
+// is not expanded. What an #if drops is not read (EffectConditionals.h): a D3D10
+// `RasterizerState` or `technique10` in the branch not taken is not judged.
 //
 // Recorded: techniques (technique, technique10, technique11) and their passes, with each
 // pass's state assignments as written (interpreted for the chosen pass only, by
@@ -18,9 +19,11 @@
 // its line) which become plain `sampler2D`/`samplerCUBE`/... declarations; top-level
 // functions with their parameters (for `compile` arguments). Dropped: annotations, `string`
 // globals, the `shared` qualifier. Kept: semantics and initialisers on globals (glslang
-// accepts both; an initialised global is still a uniform the case binds).
+// accepts both; an initialised global is still a uniform, which the case binds or which
+// takes its initial value, as D3DX sets it).
 // Refused with the construct and line: `VertexShader`/`PixelShader` variables and `asm`
 // blocks, state blocks other than sampler_state (`stateblock`, `BlendState` ...).
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -86,6 +89,14 @@ struct EffectFunction {
   int line = 0;
 };
 
+// A global's initial value (`float3 g_vF0 = {0.04, 0.04, 0.04};`, `float g_f = 0.5f;`):
+// what the parameter holds until the application sets it, so what the case binds it to
+// when it binds nothing. Scalars and vectors of numbers only; a scalar fills a vector.
+struct EffectInitialValue {
+  std::vector<double> values;
+  int line = 0;
+};
+
 struct EffectFile {
   std::string path;
   std::string hlsl;        // the text glslang compiles: effect syntax blanked, same lines
@@ -93,6 +104,7 @@ struct EffectFile {
   std::vector<EffectTexture> textures;
   std::vector<EffectSampler> samplers;
   std::vector<EffectFunction> functions;
+  std::map<std::string, EffectInitialValue> initial_values;   // by global name
   std::vector<EffectNote> notes;
 
   const EffectFunction* function(std::string_view name) const;

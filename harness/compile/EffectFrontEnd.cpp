@@ -117,7 +117,11 @@ Result<EffectStage> prepare_effect_stage(const ShaderSource& file, const EffectC
   out.render_state = states->render_state;
   out.notes = std::move(effect->notes);
   out.notes.insert(out.notes.end(), states->notes.begin(), states->notes.end());
-  for (const EffectSampler& s : effect->samplers) out.samplers[s.name] = s.settings;
+  for (const EffectSampler& s : effect->samplers) {
+    out.samplers[s.name] = s.settings;
+    if (!s.texture.empty()) out.sampler_textures[s.name] = s.texture;
+  }
+  for (const auto& [name, initial] : effect->initial_values) out.initial_values[name] = initial.values;
   std::string hlsl = effect->hlsl;
   auto entry = entry_for(*effect, *compiled, hlsl);
   if (!entry) return std::unexpected(entry.error());
@@ -125,8 +129,7 @@ Result<EffectStage> prepare_effect_stage(const ShaderSource& file, const EffectC
   return out;
 }
 
-Result<ProgramSource> prepare_effect_program(const ProgramSource& program, RenderState& render_state,
-                                             std::map<std::string, SamplerSettings>& samplers) {
+Result<ProgramSource> prepare_effect_program(const ProgramSource& program, CompiledProgram& compiled) {
   ProgramSource out = program;
   bool state_taken = false;
   for (ShaderSource* stage : {&out.vertex, &out.fragment}) {
@@ -134,10 +137,12 @@ Result<ProgramSource> prepare_effect_program(const ProgramSource& program, Rende
     auto prepared = prepare_effect_stage(*stage, program.effect);
     if (!prepared) return std::unexpected(prepared.error());
     if (!state_taken) {
-      render_state = prepared->render_state;
+      compiled.render_state = prepared->render_state;
       state_taken = true;
     }
-    samplers.insert(prepared->samplers.begin(), prepared->samplers.end());
+    compiled.sampler_settings.insert(prepared->samplers.begin(), prepared->samplers.end());
+    compiled.effect_sampler_textures.insert(prepared->sampler_textures.begin(), prepared->sampler_textures.end());
+    compiled.uniform_defaults.insert(prepared->initial_values.begin(), prepared->initial_values.end());
     *stage = std::move(prepared->source);
   }
   if (!state_taken && (!program.effect.technique.empty() || !program.effect.pass.empty()))

@@ -31,6 +31,8 @@ struct EffectStage {
   std::string profile;     // e.g. "ps_2_0"
   RenderState render_state;
   std::map<std::string, SamplerSettings> samplers;  // by sampler name
+  std::map<std::string, std::string> sampler_textures;   // sampler -> the texture its sampler_state names
+  std::map<std::string, std::vector<double>> initial_values;   // by global name
   std::vector<EffectNote> notes;
 };
 
@@ -39,9 +41,10 @@ struct EffectStage {
 Result<EffectStage> prepare_effect_stage(const ShaderSource& file, const EffectChoice& choice);
 
 // Rewrites every stage of `program` whose file is an effect; the others stay as they are.
-// The render state and sampler settings come from the effect (the vertex stage's if both
-// stages name one), written to `render_state` and `samplers`.
-Result<ProgramSource> prepare_effect_program(const ProgramSource& program, RenderState& render_state,
-                                             std::map<std::string, SamplerSettings>& samplers);
+// The render state, sampler settings, the textures the samplers name and the globals'
+// initial values come from the effect (the vertex stage's render state if both stages
+// name one), written to `compiled` (render_state, sampler_settings,
+// effect_sampler_textures, uniform_defaults).
+Result<ProgramSource> prepare_effect_program(const ProgramSource& program, CompiledProgram& compiled);
 
 }  // namespace shaderbed

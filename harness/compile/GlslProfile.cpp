@@ -62,6 +62,24 @@ GlslVersion glsl_version(std::string_view text) {
   return v;
 }
 
+bool is_unversioned_glsl_es(const GlslVersion& version, std::string_view text) {
+  if (version.declared) return false;
+  const std::vector<Token> tokens = cg::lex(text);
+  for (size_t i = 0; i + 1 < tokens.size(); ++i)
+    if (tokens[i].is("precision") && tokens[i + 1].is_identifier()) return true;
+  return false;
+}
+
+bool is_glsl_es(const GlslVersion& version, std::string_view text) {
+  return version.es || (version.declared && version.number == 100) || is_unversioned_glsl_es(version, text);
+}
+
+bool declares_reduced_precision(std::string_view text) {
+  for (const Token& t : cg::lex(text))
+    if (t.kind != TokenKind::directive && (t.is("mediump") || t.is("lowp"))) return true;
+  return false;
+}
+
 bool is_legacy_glsl(const GlslVersion& v) { return !v.es && (v.number <= 140 || v.compatibility); }
 
 bool needs_relaxed_vulkan_rules(std::string_view text) {

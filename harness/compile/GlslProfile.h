@@ -19,6 +19,18 @@ struct GlslVersion {
 
 GlslVersion glsl_version(std::string_view text);
 
+// WebGL 1's GLSL as browsers take it: no #version (so GLSL ES 1.00), told from desktop
+// GLSL 1.10 by a default precision statement (`precision mediump float;`), which 1.10
+// cannot parse and an ES 1.00 fragment shader must have.
+bool is_unversioned_glsl_es(const GlslVersion& version, std::string_view text);
+
+// GLSL ES of any form: `#version 100`, `#version 300 es` and up, or unversioned WebGL 1.
+bool is_glsl_es(const GlslVersion& version, std::string_view text);
+
+// Whether the text asks for reduced precision: a `mediump` or `lowp` anywhere (a default
+// precision statement or a qualifier). Only ES shaders mean it; desktop GLSL ignores them.
+bool declares_reduced_precision(std::string_view text);
+
 // Desktop GLSL of the GL-era: no #version, 110-140, or a compatibility profile. Mesa
 // compiles it only in a compatibility context; glslang only through the dialect.
 bool is_legacy_glsl(const GlslVersion& version);

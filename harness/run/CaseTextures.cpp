@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "backends/TextureShape.h"
 #include "run/TextureFiles.h"
@@ -32,6 +33,20 @@ Error CaseTextures::at_entry(const std::string& name, std::string message) const
 
 Result<void> CaseTextures::check(const CompiledProgram& program) {
   const std::vector<const SamplerBinding*> samplers = declared_samplers(program);
+  // A D3D9 program sets a DX9 effect's texture variable, not its sampler: an entry named
+  // after the texture binds every sampler whose sampler_state names it.
+  std::set<std::string> texture_variables;
+  for (const auto& [sampler, texture] : program.effect_sampler_textures) {
+    const auto entry = entries_.find(texture);
+    if (entry == entries_.end() || std::ranges::find(samplers, texture, &SamplerBinding::name) != samplers.end())
+      continue;
+    if (entries_.contains(sampler))
+      return std::unexpected(at_entry(sampler, "[textures] binds both sampler '" + sampler + "' and the texture '" +
+                                                   texture + "' it samples; bind one of them"));
+    texture_variables.insert(texture);
+    entries_[sampler] = entry->second;
+  }
+  for (const std::string& texture : texture_variables) entries_.erase(texture);
   std::vector<std::string> names;
   for (const SamplerBinding* s : samplers) {
     if (std::ranges::find(names, s->name) == names.end()) names.push_back(s->name);

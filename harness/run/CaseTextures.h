@@ -1,6 +1,7 @@
 #pragma once
 // Binds a shader's samplers from a case. A sampler, or the Texture2D of an SM4 pair, is
-// bound by its name: to an image file under [textures] (run/TextureFiles.h), or to the
+// bound by its name (a DX9 effect's sampler also by the texture variable its sampler_state
+// names, as a D3D9 program sets it): to an image file under [textures] (run/TextureFiles.h), or to the
 // variant's generated LUT (`NAME = "lut"` under [bindings.<language>]), or to a texture the
 // case's model generated, by its name (`NAME = "sh_specular"`). How it samples
 // comes, lowest first, from the LUT defaults (SamplerSettings{}), a DX9 effect's

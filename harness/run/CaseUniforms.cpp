@@ -79,10 +79,15 @@ Result<std::vector<float>> CaseUniforms::value(const UniformBlock& block, const 
   // Legacy GLSL's matrices (gl_ModelViewMatrix, ...) are the scene's unless the case binds them.
   const std::optional<std::string> legacy = it == bindings_.end() ? legacy_glsl_default_binding(member.name) : std::nullopt;
   const Binding legacy_binding{.sources = {BindingSource{.name = legacy.value_or(""), .literal = {}}}};
-  if (it == bindings_.end() && !legacy)
+  // Else the program's own initial value (a DX9 effect's `float g_f = 0.5;`).
+  std::optional<Binding> initial;
+  if (it == bindings_.end() && !legacy && defaults_)
+    if (auto d = defaults_->find(member.name); d != defaults_->end())
+      initial = Binding{.sources = {BindingSource{.name = "", .literal = d->second}}};
+  if (it == bindings_.end() && !legacy && !initial)
     return std::unexpected(error("uniform '" + member.name + "' of block '" + block.name +
                                  "' has no binding in the case (add it under [bindings.<language>])"));
-  const Binding& binding = legacy ? legacy_binding : it->second;
+  const Binding& binding = legacy ? legacy_binding : initial ? *initial : it->second;
   auto values = concatenate(binding, member);
   if (!values) return values;
   std::vector<float> out = std::move(*values);

@@ -2,7 +2,8 @@
 // Binds a shader's uniforms from a case: the case's binding table for the language maps
 // a uniform name (or an HLSL register "cN" of the $Global block) to scene quantities,
 // model parameters and literal numbers, concatenated in order; a row_vector binding is
-// uploaded transposed.
+// uploaded transposed. A uniform the table does not bind takes the program's own default,
+// where it has one: a DX9 effect global's initial value, as D3DX sets it.
 #include "backends/UniformPacking.h"
 #include "compile/ShaderModule.h"
 #include "scene/CaseFile.h"
@@ -12,8 +13,10 @@ namespace shaderbed {
 
 class CaseUniforms final : public UniformResolver {
  public:
-  CaseUniforms(const BindingTable& bindings, NamedValues values, std::string case_path)
-      : bindings_(bindings), values_(std::move(values)), case_path_(std::move(case_path)) {}
+  // `defaults`: CompiledProgram::uniform_defaults (may be null).
+  CaseUniforms(const BindingTable& bindings, NamedValues values, std::string case_path,
+               const std::map<std::string, std::vector<double>>* defaults = nullptr)
+      : bindings_(bindings), values_(std::move(values)), case_path_(std::move(case_path)), defaults_(defaults) {}
 
   Result<std::vector<float>> value(const UniformBlock& block, const UniformMember& member) const override;
 
@@ -41,6 +44,7 @@ class CaseUniforms final : public UniformResolver {
   const BindingTable& bindings_;
   NamedValues values_;      // scene quantities and parameters by name
   std::string case_path_;
+  const std::map<std::string, std::vector<double>>* defaults_;
 };
 
 // Scene quantities plus the case's parameters (parameters may not shadow quantities).

@@ -11,7 +11,7 @@ Result<DrawnCell> draw_cell(Backend& backend, const CellDraw& d) {
   const BindingTable& table = d.bindings ? *d.bindings : own == d.c.bindings.end() ? no_bindings : own->second;
   NamedValues values = d.values ? *d.values : bindable_values(d.scene, d.c);
   if (d.additions) values.insert(d.additions->values.begin(), d.additions->values.end());
-  CaseUniforms uniforms(table, std::move(values), d.c.path);
+  CaseUniforms uniforms(table, std::move(values), d.c.path, &d.program.uniform_defaults);
   if (auto bound = uniforms.check_all_bound(d.program); !bound) return std::unexpected(bound.error());
   DrawnCell drawn;
   if (d.other_sources) drawn.warnings = uniforms.unused_bindings(d.program, *d.other_sources);

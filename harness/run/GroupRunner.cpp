@@ -197,6 +197,8 @@ struct GroupRunner::Impl final : GroupDrawer {
     if (!compiled.program) return std::unexpected(compiled.program.error());
     r.time_ms["compile"] = compiled.ms;
     r.artefacts = compiled.sources;
+    if (cell.path == ShaderPath::native_glsl && compiled.program->native_glsl_reduced_precision)
+      reduced_precision_.insert(r.id());
     r.vertex_spirv_hash = spirv_hash(compiled.program->vertex.spirv);
     r.fragment_spirv_hash = spirv_hash(compiled.program->fragment.spirv);
     std::tie(r.vertex_instructions, r.fragment_instructions) = compiled.instructions;
@@ -301,7 +303,8 @@ struct GroupRunner::Impl final : GroupDrawer {
     std::vector<RenderOutcome> outcomes;
     for (size_t i = 0; i < rendered.size(); ++i) {
       const CellResult& r = results[rendered[i]];
-      outcomes.push_back({r.language, r.backend, r.path, r.status == CellStatus::pass, &images[i]});
+      outcomes.push_back({r.language, r.backend, r.path, r.status == CellStatus::pass, &images[i],
+                          reduced_precision_.contains(r.id())});
     }
     const std::vector<Verdict> verdicts = attribute_failures(
         outcomes, reference, {t.interior, t.silhouette, t.interior_rel, t.silhouette_rel}, area_);
@@ -472,6 +475,7 @@ struct GroupRunner::Impl final : GroupDrawer {
   Result<const Texture*> group_lut_ = nullptr;
   const DrawAdditions* additions_ = nullptr;        // what its reference adds to each draw
   bool notes_textures_ = false;
+  std::set<std::string> reduced_precision_;   // cells whose path computes in reduced precision, by id
   std::vector<PixelClass> classes_;                 // its reference, classified once for all its cells
 };
 

@@ -269,3 +269,36 @@ TEST(RendersMaxDifference, OverTheReferenceInterior) {
 
 }  // namespace
 }  // namespace shaderbed
+
+namespace shaderbed {
+namespace {
+
+// A GLSL ES mediump shader: gl/glsl computes it in reduced precision, the others in full.
+std::vector<Verdict> mediump_group(const Image& native, const Image& others, bool native_reduced) {
+  static const ReferenceImage reference = disc_reference();
+  static std::vector<Image> images;
+  images = {others, native, others, others};
+  std::vector<RenderOutcome> outcomes;
+  const char* paths[][2] = {{"vulkan", "spirv"}, {"gl", "glsl"}, {"gl", "spirv"}, {"gl", "cross"}};
+  for (size_t i = 0; i < 4; ++i)
+    outcomes.push_back({"glsl", paths[i][0], paths[i][1], compare_images(images[i], reference, kThresholds).pass,
+                        &images[i], native_reduced && i == 1});
+  return attribute_failures(outcomes, reference, kThresholds);
+}
+
+TEST(Attribution, OnlyThePathThatComputesInReducedPrecisionDifferingIsReducedPrecision) {
+  const std::vector<Verdict> v = mediump_group(wrong(), good(), true);
+  EXPECT_EQ(v[1].attribution, Attribution::reduced_precision) << v[1].reason;
+  EXPECT_EQ(v[1].reason, "glsl on gl/glsl computes in reduced precision what the shader declares so (mediump, "
+                         "lowp); every render at full precision passes (glsl vulkan/spirv, glsl gl/spirv, glsl "
+                         "gl/cross)");
+  EXPECT_STREQ(to_string(v[1].attribution), "reduced precision");
+  // The same difference on a path that computes in full precision is the driver's.
+  EXPECT_EQ(mediump_group(wrong(), good(), false)[1].attribution, Attribution::driver);
+  // A full-precision path failing too: precision does not explain the group.
+  const std::vector<Verdict> all = mediump_group(wrong(), wrong(), true);
+  EXPECT_NE(all[1].attribution, Attribution::reduced_precision) << all[1].reason;
+}
+
+}  // namespace
+}  // namespace shaderbed

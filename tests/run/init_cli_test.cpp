@@ -222,3 +222,35 @@ TEST(InitCli, BadInputIsOneLineAndExitTwo) {
 }
 
 }  // namespace
+
+namespace {
+
+// Issue 26 §6's effect and WebGL shaders: init writes a case that runs, shaders unedited.
+TEST(InitCli, EffectWithAD3D10BranchThatIsOff) {
+  TempDir dir("init_fx_sm4");
+  copy_realworld(dir, "fx/lambert_sm4_fallback.fx");
+  init_and_run(dir, dir / "fx/lambert_sm4_fallback.fx", "fx/lambert_sm4_fallback.toml");
+}
+
+TEST(InitCli, EffectWithATextureVariableAndInitialValues) {
+  TempDir dir("init_fx_textured");
+  copy_realworld(dir, "fx/textured_blinn_phong.fx");
+  copy_realworld(dir, "fx/tan_constant.png");
+  init_and_run(dir, dir / "fx/textured_blinn_phong.fx", "fx/textured_blinn_phong.toml");
+}
+
+TEST(InitCli, UnversionedWebGl1) {
+  TempDir dir("init_webgl1");
+  copy_realworld(dir, "webgl/lambert.vert");
+  copy_realworld(dir, "webgl/lambert.frag");
+  init_and_run(dir, dir / "webgl/lambert.vert" + " " + dir / "webgl/lambert.frag", "webgl/lambert.toml");
+}
+
+TEST(InitCli, WebGl2Es300) {
+  TempDir dir("init_webgl2");
+  copy_realworld(dir, "webgl/blinn_phong.vert");
+  copy_realworld(dir, "webgl/blinn_phong.frag");
+  init_and_run(dir, dir / "webgl/blinn_phong.vert" + " " + dir / "webgl/blinn_phong.frag", "webgl/blinn_phong.toml");
+}
+
+}  // namespace
