@@ -102,7 +102,7 @@ std::string replaced(std::string text, const std::string& from, const std::strin
 // The bool reaches the shader: `halfLambert = true` draws half-Lambert, which the Lambert model fails.
 TEST(CaseKeysBoolUniform, TrueSelectsTheOtherBranchAndFails) {
   test::TempDir dir("case_keys_bool");
-  const std::string text = replaced(read_corpus_case("extensions_half_lambert"), "halfLambert = false", "halfLambert = true");
+  const std::string text = replaced(read_corpus_case("extensions_half_lambert"), "\nhalfLambert = false", "\nhalfLambert = true");
   auto report = run_case_keys_case(case_beside_corpus(dir, "half_lambert_true", text).string(), "half_lambert_true");
   ASSERT_TRUE(report) << report.error().to_string();
   test::paths_all_with_status(*report, "fail");
