@@ -161,6 +161,17 @@ CaseDraft draft_case(const std::vector<SurveyedLanguage>& languages, const std::
   w.line(toml_entry("reference", toml_inline_table({{"language", toml_string(to_string(original.language))},
                                                     {"backend", toml_string("vulkan")},
                                                     {"path", toml_string("spirv")}})));
+  // The preprocessor's inputs init was given (--define, --include-dir), as the case keys them.
+  if (!original.files.defines.empty()) {
+    TomlEntries defines;
+    for (const auto& [name, value] : original.files.defines) defines.emplace_back(name, toml_string(value));
+    w.line(toml_entry("defines", toml_inline_table(defines)));
+  }
+  if (!original.files.include_dirs.empty()) {
+    std::string dirs;
+    for (const std::string& d : original.files.include_dirs) dirs += (dirs.empty() ? "" : ", ") + toml_string(relative_to(root, d));
+    w.line(toml_entry("include_dirs", "[" + dirs + "]"));
+  }
   if (uses_ambient)
     w.commented(toml_entry("ambient", float_list({0.1, 0.1, 0.1})), "the scene's ambient light colour, what ambient_light binds");
 

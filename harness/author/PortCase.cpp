@@ -80,6 +80,7 @@ const char* semantic_of(VertexAttribute a) {
     case VertexAttribute::position: return "POSITION";
     case VertexAttribute::normal: return "NORMAL";
     case VertexAttribute::tangent: return "TANGENT";
+    case VertexAttribute::binormal: return "BINORMAL";
     case VertexAttribute::texcoord: return "TEXCOORD0";
     case VertexAttribute::color: return "COLOR0";
     case VertexAttribute::extra: return "BLENDWEIGHT0";   // a named extra stream: the case maps it
@@ -92,6 +93,7 @@ const char* word_of(VertexAttribute a) {
     case VertexAttribute::position: return "position";
     case VertexAttribute::normal: return "normal";
     case VertexAttribute::tangent: return "tangent";
+    case VertexAttribute::binormal: return "binormal";
     case VertexAttribute::texcoord: return "texcoord";
     case VertexAttribute::color: return "color";
     case VertexAttribute::extra: return "extra";

@@ -8,6 +8,7 @@
 #include "author/ShaderText.h"
 #include "compile/Compiler.h"
 #include "compile/EffectFile.h"
+#include "compile/ShaderLabFrontEnd.h"
 #include "scene/CaseProgram.h"
 
 namespace shaderbed {
@@ -29,6 +30,16 @@ struct Loaded {
   std::string path;   // absolute
   std::string text;
 };
+
+// GLSL says #version or uses gl_ built-ins; HLSL and Cg put semantics after a colon.
+bool looks_like_glsl(std::string_view text) {
+  return text.find("#version") != std::string_view::npos || text.find("gl_") != std::string_view::npos;
+}
+bool looks_like_hlsl(std::string_view text) {
+  for (const char* semantic : {": POSITION", ":POSITION", ": SV_", ":SV_", ": COLOR", ": TEXCOORD"})
+    if (text.find(semantic) != std::string_view::npos) return true;
+  return false;
+}
 
 // A GLSL file's stage: by extension, else by what it writes.
 Stage glsl_stage(const Loaded& file) {
@@ -61,6 +72,20 @@ Result<SurveyedLanguage> find_glsl_files(const std::vector<Loaded>& files) {
 // carry POSITION (vertex) and COLOR (fragment), first found first.
 Result<SurveyedLanguage> find_entries(Language language, const std::vector<Loaded>& files) {
   SurveyedLanguage out{.language = language};
+  // A Unity ShaderLab file: its program block's #pragma vertex / fragment (compile/ShaderLabFrontEnd.h).
+  for (const Loaded& f : files) {
+    if (!is_shaderlab_file(f.path, f.text)) continue;
+    auto program = extract_shaderlab_program(f.text, f.path);
+    if (!program) return std::unexpected(program.error());
+    if (program->vertex_entry.empty() || program->fragment_entry.empty())
+      return std::unexpected(bad_input("the ShaderLab program block has no #pragma vertex / #pragma fragment", f.path));
+    out.files.vertex = out.files.fragment = f.path;
+    out.files.vertex_entry = program->vertex_entry;
+    out.files.fragment_entry = program->fragment_entry;
+    out.notes.push_back(std::string("entries: the #pragma vertex and fragment of its first ") +
+                        (program->hlsl_block ? "HLSLPROGRAM" : "CGPROGRAM") + " block");
+    return out;
+  }
   for (const Loaded& f : files) {
     if (!is_effect_file(f.path, f.text)) continue;
     auto effect = parse_effect(f.text, f.path);
@@ -141,29 +166,35 @@ void collect_reflection(SurveyedLanguage& out, const CompiledProgram& program, c
 
 }  // namespace
 
-Result<Language> language_of_file(const std::string& path) {
+Result<Language> language_of_file(const std::string& path, std::string_view text) {
   const std::string ext = extension_of(path);
-  if (ext == ".hlsl" || ext == ".fx" || ext == ".fxh" || ext == ".hlsli") return Language::hlsl;
+  if (ext == ".hlsl" || ext == ".fx" || ext == ".fxh" || ext == ".hlsli" || ext == ".ps") return Language::hlsl;
   if (ext == ".cg" || ext == ".cgh" || ext == ".cgfx") return Language::cg;
-  if (ext == ".vert" || ext == ".frag" || ext == ".glsl" || ext == ".vs" || ext == ".fs" || ext == ".vsh" || ext == ".fsh")
+  if (ext == ".vert" || ext == ".frag" || ext == ".glsl" || ext == ".fs" || ext == ".vsh" || ext == ".fsh")
     return Language::glsl;
+  if (is_shaderlab_file(path, text)) return text.find("HLSLPROGRAM") != std::string_view::npos ? Language::hlsl : Language::cg;
+  // .vs is a GLSL vertex shader in GL samples and an HLSL one in D3D tutorials: the text says which.
+  if (looks_like_glsl(text)) return Language::glsl;
+  if (ext == ".vs" || looks_like_hlsl(text)) return Language::hlsl;
   return std::unexpected(bad_input("unknown shader extension '" + ext +
-                                       "' (.hlsl/.fx/.fxh: hlsl; .cg: cg; .vert/.frag/.glsl/.vs/.fs: glsl; or say --lang)",
+                                       "' (.hlsl/.fx/.fxh/.ps: hlsl; .cg: cg; .vert/.frag/.glsl/.vsh/.fsh/.fs: glsl; "
+                                       ".shader: Unity ShaderLab; .vs and others by their text; or say --lang)",
                                    path));
 }
 
 Result<std::vector<SurveyedLanguage>> survey_shaders(const std::vector<std::string>& paths,
-                                                     std::optional<Language> forced) {
+                                                     std::optional<Language> forced,
+                                                     const SurveyPreprocessor& preprocessor) {
   if (paths.empty()) return std::unexpected(bad_input("no shader files given"));
   std::vector<Language> order;
   std::map<Language, std::vector<Loaded>> groups;
   for (const std::string& p : paths) {
     std::error_code ec;
     if (!fs::is_regular_file(p, ec)) return std::unexpected(bad_input("no such shader file", p));
-    auto language = forced ? Result<Language>(*forced) : language_of_file(p);
-    if (!language) return std::unexpected(language.error());
     auto source = load_shader_source(Stage::vertex, fs::absolute(p).lexically_normal().string());
     if (!source) return std::unexpected(bad_input(source.error().message, p));
+    auto language = forced ? Result<Language>(*forced) : language_of_file(p, source->text);
+    if (!language) return std::unexpected(language.error());
     if (!groups.contains(*language)) order.push_back(*language);
     groups[*language].push_back({source->path, source->text});
   }
@@ -173,6 +204,8 @@ Result<std::vector<SurveyedLanguage>> survey_shaders(const std::vector<std::stri
     auto surveyed = language == Language::glsl ? find_glsl_files(files) : find_entries(language, files);
     if (!surveyed) return std::unexpected(surveyed.error());
     SurveyedLanguage& s = *surveyed;
+    s.files.defines = preprocessor.defines;
+    s.files.include_dirs = preprocessor.include_dirs;
     // Compiled as the runner compiles a case's files (scene/CaseProgram.h, compile_program).
     auto program_source = load_case_program(language, s.files, "");
     if (program_source) program_source->effect = {.technique = s.files.technique, .pass = s.files.pass, .named_in = "", .line = 0};

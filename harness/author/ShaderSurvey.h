@@ -8,6 +8,7 @@
 // vertex inputs and the samplers.
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -32,13 +33,24 @@ struct SurveyedLanguage {
   std::vector<std::pair<std::string, SamplerSettings>> declared_sampling;
 };
 
-// The language a shader file's extension says, or an error naming the file.
-Result<Language> language_of_file(const std::string& path);
+// The language of a shader file: its extension's, else (.vs, or an extension that says
+// nothing) its text's: GLSL when it has #version or writes gl_ built-ins, a Unity
+// ShaderLab file's program block's (CGPROGRAM: cg, HLSLPROGRAM: hlsl); an error naming
+// the file when neither says.
+Result<Language> language_of_file(const std::string& path, std::string_view text);
+
+// What the case gives every front end's preprocessor (`defines`, `include_dirs`; init's
+// --define and --include-dir): the survey compiles with them and the case keeps them.
+struct SurveyPreprocessor {
+  std::vector<std::pair<std::string, std::string>> defines;
+  std::vector<std::string> include_dirs;   // absolute
+};
 
 // `paths` as given on the command line; `forced` = --lang. Bad input (a missing file, an
 // unknown extension, no entry point, a GLSL language without a vertex or fragment file)
 // is an error naming the file.
 Result<std::vector<SurveyedLanguage>> survey_shaders(const std::vector<std::string>& paths,
-                                                     std::optional<Language> forced);
+                                                     std::optional<Language> forced,
+                                                     const SurveyPreprocessor& preprocessor = {});
 
 }  // namespace shaderbed

@@ -37,6 +37,8 @@ std::optional<AttributeStream> from_word(const std::string& w) {
     return AttributeStream{VertexAttribute::normal, offsetof(Vertex, normal), 3};
   if (w == "tangent")
     return AttributeStream{VertexAttribute::tangent, offsetof(Vertex, tangent), 3};
+  if (w == "binormal" || w == "bitangent")
+    return AttributeStream{VertexAttribute::binormal, offsetof(Vertex, binormal), 3};
   if (w == "texcoord" || w == "texcoord0" || w == "uv" || w == "texcoords" || w == "gl_multitexcoord0")
     return AttributeStream{VertexAttribute::texcoord, offsetof(Vertex, uv), 2};
   if (w == "color" || w == "colour" || w == "color0" || w == "colour0" || w == "gl_color")
@@ -77,7 +79,7 @@ Result<AttributeStream> attribute_stream_for(const StageInput& input, const Attr
     if (extra)
       for (const std::string& name : extra->names) streams += ", " + name;
     return fail(ErrorStage::bind, "vertex input " + describe(input) + " is mapped to '" + *word +
-                            "', which is not a mesh attribute (position, normal, tangent, texcoord, color" + streams + ")");
+                            "', which is not a mesh attribute (position, normal, tangent, binormal, texcoord, color" + streams + ")");
   }
   if (auto a = from_extra(input.name, extra)) return *a;
   if (!input.semantic.empty()) {
@@ -85,12 +87,13 @@ Result<AttributeStream> attribute_stream_for(const StageInput& input, const Attr
     if (s == "position0" || s == "sv_position") s = "position";   // POSITION is #defined to SV_Position
     if (s == "normal0") s = "normal";
     if (s == "tangent0") s = "tangent";
+    if (s == "binormal0") s = "binormal";
     if (auto a = from_word(s)) return *a;
   }
   if (auto a = from_word(attribute_word(input.name))) return *a;
   return fail(ErrorStage::bind, "vertex input " + describe(input) +
-                          " is not a mesh attribute; use POSITION, NORMAL, TANGENT, TEXCOORD0 or COLOR "
-                          "(GLSL: position, normal, tangent, texcoord, color)");
+                          " is not a mesh attribute; use POSITION, NORMAL, TANGENT, BINORMAL, TEXCOORD0 or COLOR "
+                          "(GLSL: position, normal, tangent, binormal, texcoord, color)");
 }
 
 Result<std::vector<AttributeStream>> attribute_streams_for(const std::vector<StageInput>& inputs,
@@ -118,7 +121,7 @@ Result<std::vector<AttributeStream>> attribute_streams_for(const std::vector<Sta
                           (unmatched.size() == 1 ? " is not a mesh attribute" : " are not mesh attributes") +
                           "; map each in the case under [attributes." + lang + "], by name or location (" +
                           first->name + " = \"normal\" or \"location " + std::to_string(first->location) +
-                          "\" = \"normal\"; attributes: position, normal, tangent, texcoord, color)");
+                          "\" = \"normal\"; attributes: position, normal, tangent, binormal, texcoord, color)");
 }
 
 }  // namespace shaderbed

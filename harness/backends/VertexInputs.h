@@ -2,8 +2,9 @@
 // Maps a vertex-shader input to one of the mesh's attribute streams, first rule that
 // applies: the case's explicit map (`[attributes.<language>]`, by input name, then by
 // "location N"), the HLSL/Cg semantic when the compiler kept it (POSITION, NORMAL,
-// TANGENT, TEXCOORD0, COLOR/COLOR0), else the variable's name (position, normal,
-// tangent, texcoord/uv, color/colour, with common prefixes such as in/a_/attr stripped).
+// TANGENT, BINORMAL, TEXCOORD0, COLOR/COLOR0), else the variable's name (position, normal,
+// tangent, binormal/bitangent, texcoord/uv, color/colour, with common prefixes such as
+// in/a_/attr stripped).
 #include <cstdint>
 #include <vector>
 
@@ -13,7 +14,7 @@
 
 namespace shaderbed {
 
-enum class VertexAttribute { position, normal, tangent, texcoord, color, extra };
+enum class VertexAttribute { position, normal, tangent, binormal, texcoord, color, extra };
 
 struct AttributeStream {
   VertexAttribute attribute;

@@ -8,6 +8,7 @@
 
 #include "compile/GlslangFrontEnd.h"
 #include "compile/HlslIncluder.h"
+#include "compile/SourceDefines.h"
 
 namespace shaderbed {
 namespace {
@@ -22,11 +23,15 @@ constexpr const char* kCgMacros =
 // the included file's name and line rather than as a failed #include.
 class CgIncluder final : public HlslIncluder {
  public:
-  CgIncluder(std::vector<CgNote>& notes, std::vector<SourceFile>& read) : HlslIncluder(read), notes_(notes) {}
+  CgIncluder(std::vector<CgNote>& notes, std::vector<SourceFile>& read, std::vector<std::string> include_dirs)
+      : HlslIncluder(read, std::move(include_dirs)), notes_(notes) {}
 
-  IncludeResult* includeSystem(const char* header, const char*, size_t) override {
+  // `#include <file>` reads the case's include_dirs (a user's copies of an engine's headers).
+  IncludeResult* includeSystem(const char* header, const char* includer, size_t depth) override {
+    if (has_include_dirs()) return includeLocal(header, includer, depth);
     return failure(std::string("Cg has no system headers; write #include \"") + header +
-                   "\" (resolved relative to the including file)");
+                   "\" (resolved relative to the including file), or name the headers' folder in the case's "
+                   "include_dirs");
   }
 
   std::optional<Error> error;
@@ -105,10 +110,11 @@ Result<CgPrepared> prepare_cg(const ShaderSource& source, Target target) {
   shader.setSourceEntryPoint(source.entry_point.c_str());
   const glslang::EShClient client = target == Target::vulkan ? glslang::EShClientVulkan : glslang::EShClientOpenGL;
   shader.setEnvInput(glslang::EShSourceHlsl, stage, client, 100);
-  shader.setPreamble(kCgMacros);
+  const std::string preamble = std::string(kCgMacros) + define_lines(source.defines);
+  shader.setPreamble(preamble.c_str());
   const auto messages = static_cast<EShMessages>(EShMsgReadHlsl | EShMsgHlslDX9Compatible);
 
-  CgIncluder includer(out.notes, out.includes);
+  CgIncluder includer(out.notes, out.includes, source.include_dirs);
   std::string preprocessed;
   const bool ok =
       shader.preprocess(GetDefaultResources(), 100, ENoProfile, false, false, messages, &preprocessed, includer);
@@ -119,7 +125,7 @@ Result<CgPrepared> prepare_cg(const ShaderSource& source, Target target) {
   if (!translation) return std::unexpected(translation.error());
   out.notes.insert(out.notes.end(), translation->notes.begin(), translation->notes.end());
   out.text = translation->text;
-  out.preamble = std::string(kCgMacros) + translation->helpers;
+  out.preamble = preamble + translation->helpers;
   out.translation = std::move(*translation);
   return out;
 }

@@ -73,6 +73,9 @@ CompileCache::CompileCache(std::filesystem::path dir, CompileToolchain toolchain
 CompileCacheCounts CompileCache::counts() const { return {0, hits_.load(), misses_.load(), compiles_.load()}; }
 
 std::string CompileCache::stage_key(Language language, const ShaderSource& source, Target target) const {
+  std::string defines, include_dirs;
+  for (const auto& [name, value] : source.defines) defines += name + '=' + value + '\n';
+  for (const std::string& dir : source.include_dirs) include_dirs += dir + '\n';
   return Key()
       .field("kind", kStageKind)
       .field("language", to_string(language))
@@ -81,6 +84,8 @@ std::string CompileCache::stage_key(Language language, const ShaderSource& sourc
       .field("entry", source.entry_point)
       .field("path", source.path)
       .field("text", source.text)
+      .field("defines", defines)
+      .field("include-dirs", include_dirs)
       .field("glslang", toolchain_.glslang)
       .field("spirv-tools", toolchain_.spirv_tools)
       .field("spirv-cross", toolchain_.spirv_cross)

@@ -8,6 +8,8 @@
 #include "compile/EffectFrontEnd.h"
 #include "compile/GlslDialect.h"
 #include "compile/GlslangFrontEnd.h"
+#include "compile/ShaderLabFrontEnd.h"
+#include "compile/SourceDefines.h"
 #include "compile/SpirvReflection.h"
 #include "compile/SpirvTools.h"
 #include "compile/StageCache.h"
@@ -47,11 +49,25 @@ Result<ShaderModule> compile_stage(Language language, const ShaderSource& source
                       .reflection = std::move(*reflection)};
 }
 
-Result<CompiledProgram> compile_program(const ProgramSource& source, bool with_opengl) {
+Result<CompiledProgram> compile_program(const ProgramSource& original, bool with_opengl) {
+  // GLSL takes the case's defines in its text (SourceDefines.h): the native GL path, the
+  // dialect layer and glslang then read the same source.
+  ProgramSource source = original;
+  if (source.language == Language::glsl)
+    for (ShaderSource* stage : {&source.vertex, &source.fragment}) {
+      stage->text = glsl_with_defines(stage->text, stage->defines);
+      stage->defines.clear();
+    }
   CompiledProgram out;
   out.language = source.language;
   // A DX9 effect becomes plain HLSL per stage (EffectFrontEnd.h); its pass's render
   // states, sampler_state settings and initial values travel with the program to the draw.
+  // A Unity ShaderLab file's program block is Cg or HLSL like any other (ShaderLabFrontEnd.h).
+  if (source.language != Language::glsl) {
+    auto program = prepare_shaderlab_program(source);
+    if (!program) return std::unexpected(program.error());
+    source = std::move(*program);
+  }
   Result<ProgramSource> rewritten = source;
   if (source.language == Language::hlsl)
     rewritten = prepare_effect_program(source, out);

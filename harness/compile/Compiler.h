@@ -2,6 +2,7 @@
 // Front ends (glslang: GLSL, HLSL in the book's DX9 style) to validated SPIR-V for the
 // Vulkan and OpenGL targets, with reflection, plus SPIRV-Cross GLSL for the GL path.
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "compile/ShaderModule.h"
@@ -11,11 +12,17 @@ namespace shaderbed {
 
 enum class Target { vulkan, opengl };
 
+// A preprocessor macro the case defines for a shader (`defines = { HAS_NORMALS = "1" }`):
+// name and replacement text, in the order they are defined.
+using Define = std::pair<std::string, std::string>;
+
 struct ShaderSource {
   Stage stage = Stage::vertex;
   std::string path;        // for error messages and #include resolution
   std::string text;
   std::string entry_point = "main";
+  std::vector<Define> defines;            // defined before the first line (compile/SourceDefines.h)
+  std::vector<std::string> include_dirs;  // absolute; searched after the including file's folder
 };
 
 // A file a compile read besides its ShaderSource (an #include), with the exact text read.

@@ -125,7 +125,8 @@ Result<EffectStage> prepare_effect_stage(const ShaderSource& file, const EffectC
   std::string hlsl = effect->hlsl;
   auto entry = entry_for(*effect, *compiled, hlsl);
   if (!entry) return std::unexpected(entry.error());
-  out.source = ShaderSource{.stage = file.stage, .path = file.path, .text = std::move(hlsl), .entry_point = *entry};
+  out.source = ShaderSource{.stage = file.stage, .path = file.path, .text = std::move(hlsl), .entry_point = *entry,
+                            .defines = file.defines, .include_dirs = file.include_dirs};
   return out;
 }
 

@@ -15,6 +15,7 @@
 #include "compile/HlslGuards.h"
 #include "compile/HlslIncluder.h"
 #include "compile/HlslIntrinsics.h"
+#include "compile/SourceDefines.h"
 
 namespace shaderbed {
 namespace {
@@ -134,10 +135,11 @@ Result<std::vector<uint32_t>> glslang_to_spirv(Language language, const ShaderSo
     shader.setEnvClient(glslang::EShClientOpenGL, glslang::EShTargetOpenGL_450);
   shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
 
-  // HLSL's preamble, or the Cg layer's, and the intrinsics glslang gets wrong routed to
-  // correct ones (HlslIntrinsics.h; Cg's layer substitutes its own lit).
+  // HLSL's preamble with the case's defines, or the Cg layer's (which has them already),
+  // and the intrinsics glslang gets wrong routed to correct ones (HlslIntrinsics.h; Cg's
+  // layer substitutes its own lit).
   const std::string preamble =
-      hlsl ? (cg ? cg->preamble : std::string(kHlslPreamble)) +
+      hlsl ? (cg ? cg->preamble : std::string(kHlslPreamble) + define_lines(source.defines)) +
                  hlsl_intrinsic_corrections(source_text, HlslIntrinsicSet{.lit = !cg})
            : std::string();
   int messages = EShMsgSpvRules;
@@ -178,10 +180,10 @@ Result<std::vector<uint32_t>> glslang_to_spirv(Language language, const ShaderSo
     shader.setTextureSamplerTransformMode(EShTexSampTransUpgradeTextureRemoveSampler);
 
   const auto msgs = static_cast<EShMessages>(messages);
-  // HLSL #include, relative to the including file (HlslIncluder.h); the files it reads go
+  // HLSL #include, relative to the including file, then the case's include_dirs (HlslIncluder.h); the files it reads go
   // to read_files for the disk cache. Cg's includes were resolved by prepare_cg.
   std::vector<SourceFile> hlsl_includes;
-  HlslIncluder hlsl_includer(hlsl_includes);
+  HlslIncluder hlsl_includer(hlsl_includes, source.include_dirs);
   glslang::TShader::ForbidIncluder no_includer;
   glslang::TShader::Includer& includer =
       language == Language::hlsl ? static_cast<glslang::TShader::Includer&>(hlsl_includer) : no_includer;

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <string>
 #include <sstream>
 
 namespace shaderbed {
@@ -11,8 +12,7 @@ namespace shaderbed {
 glslang::TShader::Includer::IncludeResult* HlslIncluder::includeLocal(const char* header, const char* includer, size_t depth) {
   namespace fs = std::filesystem;
   if (depth > 32) return failure("#include nested more than 32 deep (an include cycle?)");
-  const fs::path base = fs::path(includer ? includer : "").parent_path();
-  const std::string name = (base / header).lexically_normal().string();
+  const std::string name = resolve(header, includer);
   if (once_.contains(name)) {
     const std::string& empty = texts_.emplace_back();
     return new IncludeResult(name, empty.data(), 0, nullptr);
@@ -20,13 +20,28 @@ glslang::TShader::Includer::IncludeResult* HlslIncluder::includeLocal(const char
   auto text = read_bounded_file(name, "#include \"" + std::string(header) + "\"", ErrorStage::compile);
   if (!text)
     return failure("cannot read '" + name + "': " + text.error().message +
-                   " (#include \"" + header + "\" is resolved relative to the including file)");
+                   " (#include \"" + header + "\" is resolved relative to the including file" +
+                   (include_dirs_.empty() ? std::string(", then the case's include_dirs, which names none)")
+                                          : ", then in the case's include_dirs)"));
   read_.push_back({name, std::move(*text)});
   auto prepared = prepare(read_.back().text, name, includer);
   if (!prepared) return failure(prepared.error().message);
   if (prepared->pragma_once) once_.insert(name);
   const std::string& stored = texts_.emplace_back(std::move(prepared->text));
   return new IncludeResult(name, stored.data(), stored.size(), nullptr);
+}
+
+std::string HlslIncluder::resolve(const char* header, const char* includer) const {
+  namespace fs = std::filesystem;
+  const fs::path base = fs::path(includer ? includer : "").parent_path();
+  const std::string local = (base / header).lexically_normal().string();
+  std::error_code ec;
+  if (fs::exists(local, ec)) return local;
+  for (const std::string& dir : include_dirs_) {
+    const std::string candidate = (fs::path(dir) / header).lexically_normal().string();
+    if (fs::exists(candidate, ec)) return candidate;
+  }
+  return local;
 }
 
 glslang::TShader::Includer::IncludeResult* HlslIncluder::includeSystem(const char* header, const char* includer, size_t depth) {

@@ -1,7 +1,7 @@
 #pragma once
-// `#include` for HLSL (and DX9 effects), as fxc resolves it with its default handler:
-// relative to the including file (`"file"` and `<file>` alike: shaderbed has no system
-// include paths), `#pragma once` honoured. A missing header is an error naming it, at the
+// `#include` for HLSL (and DX9 effects), as fxc resolves it with /I folders: relative to
+// the including file, then in the case's `include_dirs` in order (`"file"` and `<file>`
+// alike: shaderbed has no system include paths of its own), `#pragma once` honoured. A missing header is an error naming it, at the
 // including file's line (glslang reports it there). Every file read is recorded with its
 // exact text, so the disk compile cache can re-check it on a hit. The Cg front end
 // (CgFrontEnd.cpp) is the same includer with its own per-file pass: prepare().
@@ -18,7 +18,8 @@ namespace shaderbed {
 
 class HlslIncluder : public glslang::TShader::Includer {
  public:
-  explicit HlslIncluder(std::vector<SourceFile>& read) : read_(read) {}
+  HlslIncluder(std::vector<SourceFile>& read, std::vector<std::string> include_dirs)
+      : read_(read), include_dirs_(std::move(include_dirs)) {}
 
   IncludeResult* includeLocal(const char* header, const char* includer, size_t depth) override;
   IncludeResult* includeSystem(const char* header, const char* includer, size_t depth) override;
@@ -33,9 +34,14 @@ class HlslIncluder : public glslang::TShader::Includer {
   // its message. HLSL: the text as it is.
   virtual Result<Prepared> prepare(const std::string& text, const std::string& name, const char* includer);
   IncludeResult* failure(std::string message);
+  // Where `header` is: the including file's folder first, then each include folder; the
+  // first candidate when none has it (the error names it).
+  std::string resolve(const char* header, const char* includer) const;
+  bool has_include_dirs() const { return !include_dirs_.empty(); }
 
  private:
   std::vector<SourceFile>& read_;
+  std::vector<std::string> include_dirs_;
   std::set<std::string> once_;
   std::deque<std::string> texts_;  // stable storage for the returned contents
 };

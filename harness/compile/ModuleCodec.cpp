@@ -11,7 +11,7 @@ namespace shaderbed {
 static_assert(sizeof(UniformMember) == 72, "UniformMember changed: update ModuleCodec.cpp");
 static_assert(sizeof(UniformBlock) == 72, "UniformBlock changed: update ModuleCodec.cpp");
 static_assert(sizeof(StageInput) == 80, "StageInput changed: update ModuleCodec.cpp");
-static_assert(sizeof(SamplerBinding) == 80, "SamplerBinding changed: update ModuleCodec.cpp");
+static_assert(sizeof(SamplerBinding) == 88, "SamplerBinding changed: update ModuleCodec.cpp");
 static_assert(sizeof(Reflection) == 72, "Reflection changed: update ModuleCodec.cpp");
 static_assert(sizeof(ShaderModule) == 168, "ShaderModule changed: update ModuleCodec.cpp");
 #endif
@@ -87,6 +87,7 @@ void write_module(ByteWriter& out, const ShaderModule& m) {
       out.boolean(x.column_registers);
       out.u32(x.array_size);
       out.u32(x.array_stride);
+      out.boolean(x.read);
     }
   }
   out.u64(r.inputs.size());
@@ -106,6 +107,7 @@ void write_module(ByteWriter& out, const ShaderModule& m) {
     out.boolean(x.cube);
     out.u64(x.paired.size());
     for (const std::string& p : x.paired) out.str(p);
+    out.boolean(x.read);
   }
 }
 
@@ -126,7 +128,7 @@ bool read_module(ByteReader& in, ShaderModule& m) {
     for (UniformMember& x : b.members)
       if (!in.str(x.name) || !in.u32(x.offset) || !in.u32(x.size) || !in.boolean(x.is_float) || !in.u32(x.vecsize) ||
           !in.u32(x.columns) || !in.u32(x.matrix_stride) || !in.boolean(x.column_registers) ||
-          !in.u32(x.array_size) || !in.u32(x.array_stride))
+          !in.u32(x.array_size) || !in.u32(x.array_stride) || !in.boolean(x.read))
         return false;
   }
   if (!count(in, n)) return false;
@@ -145,6 +147,7 @@ bool read_module(ByteReader& in, ShaderModule& m) {
     x.paired.resize(paired);
     for (std::string& p : x.paired)
       if (!in.str(p)) return false;
+    if (!in.boolean(x.read)) return false;
   }
   return in.ok();
 }

@@ -33,6 +33,9 @@ struct UniformMember {
   bool column_registers = true;
   uint32_t array_size = 0;      // 0 = not an array
   uint32_t array_stride = 0;
+  // The entry point's code reads it (SPIR-V reflection of the compiled module): a member
+  // declared but never read needs no binding in the case.
+  bool read = true;
   bool operator==(const UniformMember&) const = default;
 };
 
@@ -72,6 +75,7 @@ struct SamplerBinding {
   // image: the sampler states it is sampled with; sampler: the images it samples
   // (t.Sample(s, uv) pairs t with s). Empty for combined samplers.
   std::vector<std::string> paired;
+  bool read = true;             // the entry point's code samples it (as UniformMember::read)
   bool operator==(const SamplerBinding&) const = default;
 };
 

@@ -1,6 +1,8 @@
 #include "compile/SpirvReflection.h"
 
 #include <algorithm>
+#include <set>
+#include <unordered_set>
 
 #include <spirv_cross/spirv_cross.hpp>
 
@@ -38,6 +40,9 @@ Result<Reflection> reflect_spirv(const std::vector<uint32_t>& spirv, Language la
   try {
     spirv_cross::Compiler c(spirv);
     const spirv_cross::ShaderResources res = c.get_shader_resources();
+    // What the entry point's code actually reaches, so a declared but unread uniform or
+    // sampler needs no binding (a warning, not an error).
+    const std::unordered_set<spirv_cross::VariableID> active = c.get_active_interface_variables();
     Reflection r;
     for (const spirv_cross::Resource& ub : res.uniform_buffers) {
       const spirv_cross::SPIRType& type = c.get_type(ub.base_type_id);
@@ -47,8 +52,12 @@ Result<Reflection> reflect_spirv(const std::vector<uint32_t>& spirv, Language la
       block.set = c.get_decoration(ub.id, spv::DecorationDescriptorSet);
       block.binding = c.get_decoration(ub.id, spv::DecorationBinding);
       block.size = static_cast<uint32_t>(c.get_declared_struct_size(type));
-      for (uint32_t i = 0; i < type.member_types.size(); ++i)
+      std::set<uint32_t> read;
+      for (const spirv_cross::BufferRange& range : c.get_active_buffer_ranges(ub.id)) read.insert(range.index);
+      for (uint32_t i = 0; i < type.member_types.size(); ++i) {
         block.members.push_back(reflect_member(c, type, i, language));
+        block.members.back().read = read.contains(i);
+      }
       r.uniform_blocks.push_back(std::move(block));
     }
     if (stage == Stage::vertex) {
@@ -70,6 +79,7 @@ Result<Reflection> reflect_spirv(const std::vector<uint32_t>& spirv, Language la
       sb.set = c.get_decoration(s.id, spv::DecorationDescriptorSet);
       sb.binding = c.get_decoration(s.id, spv::DecorationBinding);
       sb.kind = kind;
+      sb.read = active.contains(s.id);
       if (kind != SamplerKind::sampler) {
         sb.dimensions = t.image.dim == spv::Dim1D ? 1 : t.image.dim == spv::Dim3D ? 3 : 2;
         sb.cube = t.image.dim == spv::DimCube;

@@ -27,6 +27,9 @@ Result<ShaderModule> compile_stage_cached(Language language, const ShaderSource&
   // The full inputs rather than a hash of them: a hit can never be a collision.
   std::string key = std::string(to_string(language)) + '|' + to_string(source.stage) + '|' +
                     std::to_string(int(target)) + '|' + source.entry_point + '|' + source.path + '|' + source.text;
+  // The case's defines and include folders change what the same text compiles to.
+  for (const auto& [name, value] : source.defines) key += "|D" + name + '=' + value;
+  for (const std::string& dir : source.include_dirs) key += "|I" + dir;
   {
     const std::lock_guard lock(mutex);
     if (auto it = modules.find(key); it != modules.end()) {

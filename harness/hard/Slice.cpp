@@ -108,6 +108,7 @@ Slice make_slice(const SliceSpec& spec, int size) {
       }
       for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) s.mesh.indices.push_back(first + i);
     }
+  fill_binormals(s.mesh.vertices);
 
   if (spec.layout == NormalLayout::half_angle)
     for (int y = 0; y < h; ++y)

@@ -19,13 +19,22 @@ struct Vertex {
   // (vertex_colour_from_normal), so it varies over every shape and is known exactly;
   // other meshes keep white.
   glm::vec4 color{1, 1, 1, 1};
+  // The third axis of the tangent frame, normal x tangent (BINORMAL, a bitangent), as
+  // D3D9-era meshes carry it; fill_binormals() computes it from the other two.
+  glm::vec3 binormal{0, 0, 0};
 };
-static_assert(sizeof(Vertex) == 60, "backends upload Vertex as a tightly packed 60-byte stride");
+static_assert(sizeof(Vertex) == 72, "backends upload Vertex as a tightly packed 72-byte stride");
 
 inline glm::vec4 vertex_colour_from_normal(const glm::vec3& n) { return {0.5f + 0.5f * n, 1.0f}; }
 
+// Every vertex's binormal from its normal and tangent (unit when they are unit and orthogonal).
+inline void fill_binormals(std::vector<Vertex>& vertices) {
+  for (Vertex& v : vertices) v.binormal = glm::cross(v.normal, v.tangent);
+}
+
 // A case's explicit vertex input map, `[attributes.<language>]`: input name (or
-// "location N") -> attribute word: position, normal, tangent, texcoord (uv), color (colour).
+// "location N") -> attribute word: position, normal, tangent, binormal (bitangent),
+// texcoord (uv), color (colour).
 using AttributeTable = std::map<std::string, std::string>;
 
 // Per-vertex data beyond the fixed format, in a second vertex buffer: named 4-float

@@ -83,7 +83,23 @@ Result<void> CaseTextures::check(const CompiledProgram& program) {
     if (!texture) return std::unexpected(texture.error());
     loaded_[name] = std::move(*texture);
   }
+  for (const SamplerBinding* s : samplers) {
+    if (s->read || s->kind == SamplerKind::sampler || entries_.contains(s->name) || bindings_.contains(s->name) ||
+        unread_.contains(s->name))
+      continue;
+    Texture placeholder{.name = s->name, .dimensions = s->dimensions, .texels = {}, .cube = s->cube};
+    placeholder.texels.assign(s->cube ? 6 : 1, 0.0f);
+    unread_[s->name] = std::make_shared<const Texture>(std::move(placeholder));
+  }
   return {};
+}
+
+std::vector<std::string> CaseTextures::unread_unbound() const {
+  std::vector<std::string> warnings;
+  for (const auto& [name, texture] : unread_)
+    warnings.push_back("sampler '" + name + "' has no binding; the shader declares it but never samples it, so it "
+                       "gets a 1x1 black texture");
+  return warnings;
 }
 
 namespace {
@@ -143,6 +159,7 @@ std::string CaseTextures::reference_note() const {
 
 Result<const Texture*> CaseTextures::texture(const SamplerBinding& sampler) const {
   if (auto it = loaded_.find(sampler.name); it != loaded_.end()) return it->second.get();
+  if (auto it = unread_.find(sampler.name); it != unread_.end()) return it->second.get();
   if (entries_.contains(sampler.name))
     return std::unexpected(at_entry(sampler.name, "texture '" + sampler.name + "' was not loaded (CaseTextures::check "
                                                                                "runs before the draw)"));

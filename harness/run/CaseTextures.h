@@ -12,6 +12,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "backends/Backend.h"
 #include "scene/CaseFile.h"
@@ -53,6 +54,11 @@ class CaseTextures final : public TextureResolver {
   // the reference (the case's parameters stand for them).
   std::string reference_note() const;
 
+  // After check(): the samplers left without a binding because the compiled shader never
+  // samples them (SamplerBinding::read), each a warning; they get a 1x1 black texture so
+  // every declared descriptor is bound.
+  std::vector<std::string> unread_unbound() const;
+
  private:
   Error at_entry(const std::string& name, std::string message) const;
   // effect state, then the entry's own patch.
@@ -65,6 +71,7 @@ class CaseTextures final : public TextureResolver {
   const std::map<std::string, SamplerSettings>* effect_states_;
   const std::map<std::string, std::shared_ptr<const Texture>>* generated_;
   std::map<std::string, std::shared_ptr<const Texture>> loaded_;   // by entry name
+  std::map<std::string, std::shared_ptr<const Texture>> unread_;   // placeholders of unread, unbound samplers
   std::map<std::string, std::vector<std::string>> states_of_texture_;   // SM4 Texture2D -> its SamplerStates
   std::map<std::string, std::vector<std::string>> textures_of_state_;   // SamplerState -> its Texture2Ds
 };

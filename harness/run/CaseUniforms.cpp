@@ -84,6 +84,9 @@ Result<std::vector<float>> CaseUniforms::value(const UniformBlock& block, const 
   if (it == bindings_.end() && !legacy && defaults_)
     if (auto d = defaults_->find(member.name); d != defaults_->end())
       initial = Binding{.sources = {BindingSource{.name = "", .literal = d->second}}};
+  // Declared but never read (SPIR-V reflection): any value draws the same; zeros, and a warning (unread_unbound).
+  if (it == bindings_.end() && !legacy && !initial && !member.read)
+    return std::vector<float>(size_t(member.vecsize) * member.columns * std::max<uint32_t>(1, member.array_size), 0.0f);
   if (it == bindings_.end() && !legacy && !initial)
     return std::unexpected(error("uniform '" + member.name + "' of block '" + block.name +
                                  "' has no binding in the case (add it under [bindings.<language>])"));
@@ -173,6 +176,21 @@ std::vector<std::string> CaseUniforms::unused_bindings(const CompiledProgram& pr
                        (is_register ? "$Global register" : "uniform or sampler") +
                        ") and no other variant's shader of this language names; it is ignored");
   }
+  return warnings;
+}
+
+std::vector<std::string> CaseUniforms::unread_unbound(const CompiledProgram& program) const {
+  std::vector<std::string> warnings;
+  std::set<std::string> seen;
+  for (const ShaderModule* module : {&program.vertex, &program.fragment})
+    for (const UniformBlock& block : module->reflection.uniform_blocks)
+      for (const UniformMember& member : block.members) {
+        if (member.read || find_binding(block, member) != bindings_.end() || legacy_glsl_default_binding(member.name))
+          continue;
+        if (!seen.insert(member.name).second) continue;
+        warnings.push_back("uniform '" + member.name + "' has no binding; the shader declares it but never reads it, "
+                           "so it is uploaded as zeros");
+      }
   return warnings;
 }
 

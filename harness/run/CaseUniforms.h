@@ -34,6 +34,10 @@ class CaseUniforms final : public UniformResolver {
   std::vector<std::string> unused_bindings(const CompiledProgram& program,
                                            const std::vector<std::string>& other_sources) const;
 
+  // The uniforms left without a binding because the compiled shader never reads them
+  // (UniformMember::read): drawn with zeros, each a warning on the cell.
+  std::vector<std::string> unread_unbound(const CompiledProgram& program) const;
+
  private:
   // The binding's values, concatenated, before any layout is applied.
   Result<std::vector<float>> concatenate(const Binding& binding, const UniformMember& member) const;

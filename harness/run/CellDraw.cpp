@@ -15,10 +15,12 @@ Result<DrawnCell> draw_cell(Backend& backend, const CellDraw& d) {
   if (auto bound = uniforms.check_all_bound(d.program); !bound) return std::unexpected(bound.error());
   DrawnCell drawn;
   if (d.other_sources) drawn.warnings = uniforms.unused_bindings(d.program, *d.other_sources);
+  for (std::string& w : uniforms.unread_unbound(d.program)) drawn.warnings.push_back(std::move(w));
 
   CaseTextures textures(table, d.c.textures.for_language(d.language), d.lut, d.c.path, &d.program.sampler_settings,
                         d.additions ? &d.additions->textures : nullptr);
   if (auto ok = textures.check(d.program); !ok) return std::unexpected(ok.error());
+  for (const std::string& w : textures.unread_unbound()) drawn.warnings.push_back(w);
   if (d.flip_images && !textures.flip_images_vertically()) return fail(ErrorStage::counterfactual, "no image to flip");
   if (d.texel_step && !textures.step_texels(d.texel_step->texture, d.texel_step->channel))
     return fail(ErrorStage::counterfactual, "'" + d.texel_step->texture + "' is no 8-bit image file");

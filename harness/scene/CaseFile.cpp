@@ -70,7 +70,7 @@ Result<Case> load_case(const std::string& path) {
 
   if (auto ok = check_keys(path, root,
                            {"model", "reference", "description", "tessellation", "params", "variants", "bindings",
-                            "attributes", "light", "ambient", "textures", "tolerance", "sh"},
+                            "attributes", "light", "ambient", "textures", "tolerance", "sh", "defines", "include_dirs"},
                            "the case");
       !ok)
     return std::unexpected(ok.error());
@@ -78,9 +78,10 @@ Result<Case> load_case(const std::string& path) {
   c.description = root["description"].value_or(std::string());
   // Read in this order, so that a file with several mistakes is always told the same first one.
   using namespace case_sections;
-  const SectionParser sections[] = {read_judged_against, read_tessellation, read_params,   read_variants,
-                                    read_bindings,       read_attributes,   read_light,    read_ambient,
-                                    read_sh,             read_textures,     read_tolerance, check_reference};
+  const SectionParser sections[] = {read_judged_against, read_tessellation, read_params,    read_variants,
+                                    read_preprocessor,   read_bindings,     read_attributes, read_light,
+                                    read_ambient,        read_sh,           read_textures,   read_tolerance,
+                                    check_reference};
   const CaseDocument doc{path, root, shader_root_of(path)};
   for (const SectionParser read : sections)
     if (auto ok = read(doc, c); !ok) return std::unexpected(ok.error());

@@ -6,6 +6,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -29,6 +30,11 @@ struct ShaderFiles {
   // `compile` statements give the entries and whose states the draw uses; "" = the first.
   std::string technique;
   std::string pass;
+  // Preprocessor defines (`defines`: the case's, its language's, then the variant's own,
+  // a later one replacing an earlier of the same name) and include folders (absolute,
+  // `include_dirs`, searched after the including file's folder).
+  std::vector<std::pair<std::string, std::string>> defines;
+  std::vector<std::string> include_dirs;
 };
 
 enum class LightingMode { per_vertex, per_pixel };

@@ -13,6 +13,10 @@ Result<ProgramSource> load_case_program(Language language, const ShaderFiles& fi
   if (!fs) return missing(files.fragment);
   vs->entry_point = files.vertex_entry;
   fs->entry_point = files.fragment_entry;
+  for (ShaderSource* stage : {&*vs, &*fs}) {
+    stage->defines = files.defines;
+    stage->include_dirs = files.include_dirs;
+  }
   return ProgramSource{language, std::move(*vs), std::move(*fs)};
 }
 

@@ -5,7 +5,7 @@ namespace shaderbed::case_sections {
 namespace {
 
 bool is_attribute_word(const std::string& w) {
-  for (const char* known : {"position", "normal", "tangent", "texcoord", "uv", "color", "colour"})
+  for (const char* known : {"position", "normal", "tangent", "binormal", "bitangent", "texcoord", "uv", "color", "colour"})
     if (w == known) return true;
   return false;
 }
@@ -24,7 +24,7 @@ Result<AttributeTable> attribute_table(const std::string& path, const std::strin
     const auto word = anode.value<std::string>();
     if (!word || !is_attribute_word(*word))
       return std::unexpected(at(path, anode, "vertex input '" + key +
-                                                 "' must map to position, normal, tangent, texcoord (uv) or color"));
+                                                 "' must map to position, normal, tangent, binormal (bitangent), texcoord (uv) or color"));
     table[key] = *word;
   }
   return table;

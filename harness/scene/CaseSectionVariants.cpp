@@ -34,13 +34,22 @@ Result<void> read_variants(const CaseDocument& doc, Case& c) {
       ShaderFiles shader_files{(shader_root / *vs).lexically_normal().string(),
                                (shader_root / *fsrc).lexically_normal().string(), int(lnode.source().begin.line)};
       if (auto ok = check_keys(path, *files,
-                               {"vertex", "fragment", "vertex_entry", "fragment_entry", "technique", "pass"},
+                               {"vertex", "fragment", "vertex_entry", "fragment_entry", "technique", "pass", "defines"},
                                "the " + std::string(lname.str()) + " shaders");
           !ok)
         return std::unexpected(ok.error());
       for (const auto& [key, value] : *files) {
         const std::string k(key.str());
         if (k == "vertex" || k == "fragment") continue;
+        // This variant's own defines, after the case's (CaseSectionPreprocessor.cpp merges them).
+        if (k == "defines") {
+          const toml::table* table = value.as_table();
+          if (!table) return std::unexpected(at(path, value, "defines must be a table: { NAME = \"value\" }"));
+          auto defines = define_table(path, *table, false);
+          if (!defines) return std::unexpected(defines.error());
+          shader_files.defines = std::move(*defines);
+          continue;
+        }
         // A DX9 effect's technique and pass (compile/EffectFrontEnd.h); default the first.
         if (k == "technique" || k == "pass") {
           const auto chosen = value.value<std::string>();

@@ -4,6 +4,7 @@
 // them in turn; nothing outside scene/ needs these.
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <toml++/toml.h>
@@ -28,6 +29,8 @@ Result<void> read_judged_against(const CaseDocument& doc, Case& c);   // model o
 Result<void> read_tessellation(const CaseDocument& doc, Case& c);     // CaseSectionScene
 Result<void> read_params(const CaseDocument& doc, Case& c);           // [params]
 Result<void> read_variants(const CaseDocument& doc, Case& c);         // [variants.NAME]
+// `defines` and `include_dirs`, merged into every variant's ShaderFiles (CaseSectionPreprocessor)
+Result<void> read_preprocessor(const CaseDocument& doc, Case& c);
 Result<void> read_bindings(const CaseDocument& doc, Case& c);         // [bindings.<language>]
 Result<void> read_attributes(const CaseDocument& doc, Case& c);       // [attributes.<language>]
 Result<void> read_light(const CaseDocument& doc, Case& c);            // CaseSectionScene
@@ -49,6 +52,11 @@ Result<void> plain_name(const std::string& path, const toml::node& node, const s
 
 // A number or an array of numbers, all finite; `key` names the value in errors.
 Result<std::vector<double>> numbers(const std::string& path, const toml::node& node, const std::string& key);
+
+// A table of preprocessor defines, NAME = "text" | number | boolean (1 or 0), in the
+// order written; skip_languages passes over the per-language tables ([defines.glsl]).
+Result<std::vector<std::pair<std::string, std::string>>> define_table(const std::string& path, const toml::table& table,
+                                                                      bool skip_languages);
 
 // Literal numbers: a number, a boolean (1 or 0) or an array of them, nested arrays
 // flattened (a matrix written row by row stays in the order written). False when the

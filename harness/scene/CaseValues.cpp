@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <optional>
 
 namespace shaderbed::case_sections {
 
@@ -34,13 +35,18 @@ Result<std::vector<double>> numbers(const std::string& path, const toml::node& n
     if (std::isfinite(v)) return {};
     return std::unexpected(at(path, n, "'" + key + "' must be finite, not " + (std::isnan(v) ? "nan" : "inf")));
   };
-  if (auto v = node.value<double>()) {
+  // A boolean is 1 or 0, as a bool uniform takes it (`use_fog = true`).
+  const auto number = [](const toml::node& n) -> std::optional<double> {
+    if (auto b = n.value_exact<bool>()) return *b ? 1.0 : 0.0;
+    return n.value<double>();
+  };
+  if (auto v = number(node)) {
     if (auto ok = finite(node, *v); !ok) return std::unexpected(ok.error());
     return std::vector<double>{*v};
   }
   if (const toml::array* a = node.as_array()) {
     for (const toml::node& e : *a) {
-      auto v = e.value<double>();
+      auto v = number(e);
       if (!v) return std::unexpected(at(path, e, "'" + key + "' must hold numbers"));
       if (auto ok = finite(e, *v); !ok) return std::unexpected(ok.error());
       out.push_back(*v);

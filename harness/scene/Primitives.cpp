@@ -23,9 +23,10 @@ void add_grid_triangles(Mesh& m, uint32_t first, int columns, int rows, bool col
     }
 }
 
-// Every shape's vertex colour, from its normal (Mesh.h).
+// Every shape's vertex colour, from its normal, and its binormal (Mesh.h).
 Mesh painted(Mesh m) {
   for (Vertex& v : m.vertices) v.color = vertex_colour_from_normal(v.normal);
+  fill_binormals(m.vertices);
   return m;
 }
 

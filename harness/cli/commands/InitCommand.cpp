@@ -27,6 +27,8 @@ struct InitArguments {
   std::vector<std::string> shaders;
   std::string out;
   std::string language;
+  std::vector<std::string> defines;        // NAME or NAME=VALUE
+  std::vector<std::string> include_dirs;
   bool force = false;
   bool no_run = false;
   int size = 64;
@@ -84,7 +86,16 @@ int run_init(const InitArguments& args) {
     return bad_input(out + " exists; init does not overwrite a case file (--force rewrites it)");
   if (auto ok = check_writable_file(out, "--out"); !ok) return bad_input(ok.error().to_string());
 
-  auto languages = survey_shaders(args.shaders, forced);
+  SurveyPreprocessor preprocessor;
+  for (const std::string& d : args.defines) {
+    const size_t eq = d.find('=');
+    preprocessor.defines.emplace_back(d.substr(0, eq), eq == std::string::npos ? "1" : d.substr(eq + 1));
+  }
+  for (const std::string& dir : args.include_dirs) {
+    if (!fs::is_directory(dir, ec)) return bad_input("--include-dir: no such folder: " + dir);
+    preprocessor.include_dirs.push_back(fs::absolute(dir).lexically_normal().string());
+  }
+  auto languages = survey_shaders(args.shaders, forced, preprocessor);
   if (!languages) return bad_input(languages.error().to_string());
   const std::vector<std::string> images = images_in(fs::absolute(first).parent_path().string());
   if (args.no_run) {
@@ -162,6 +173,10 @@ Command add_init_command(CLI::App& app) {
   cmd->add_flag("--force", args->force, "Overwrite an existing case file");
   cmd->add_option("--lang", args->language, "Read every file as this language (hlsl, cg, glsl), whatever its extension");
   cmd->add_flag("--no-run", args->no_run, "Write the case only; do not run it");
+  cmd->add_option("-D,--define", args->defines,
+                  "A preprocessor define for every shader, NAME or NAME=VALUE (the case's `defines`)");
+  cmd->add_option("-I,--include-dir", args->include_dirs,
+                  "A folder #include searches after the including file's (the case's `include_dirs`)");
   cmd->add_option("--size", args->size, "Image size of the check run, in pixels")->capture_default_str()->check(CLI::Range(8, 4096));
   return {cmd, [args] { return run_init(*args); }};
 }
