@@ -15,9 +15,10 @@ Reads the fenced blocks from the text itself, so an example cannot rot unnoticed
   comment (`# abridged: ...`) and must parse.
 
 To keep the run short the commands change in three mechanical ways, never in what they
-check: images are at most 32 px (`--size`), a command over the whole library runs on one
-case (`--case lambert`; the whole library runs in the suite.* tests), `bench` is
-`--quick`, and `view` draws two frames under xvfb-run into a screenshot.
+check: images are at most 32 px (`--size`) and timings take at most 3 repeats
+(`--repeat`), a command over the whole library runs on one case (`--case lambert`; the
+whole library runs in the suite.* tests), `bench` is `--quick`, and `view` draws two
+frames under xvfb-run into a screenshot.
 
 usage: doc_examples.py SOURCE_DIR SHADERBED_BINARY [DOC ...]
 """
@@ -86,6 +87,9 @@ def adapt(words, at):
             args[i + 1] = str(min(int(args[i + 1]), SIZE))
         elif sub != "bench":
             args += ["--size", str(SIZE)]
+    if "--repeat" in args:
+        i = args.index("--repeat")
+        args[i + 1] = str(min(int(args[i + 1]), 3))
     if sub in WHOLE_LIBRARY and not any(a in args for a in ("--case", "--cases-dir", "--from", "--compare")):
         args += ["--case", "lambert"]
     if sub == "bench" and "--quick" not in args:
@@ -93,8 +97,8 @@ def adapt(words, at):
     if sub == "view":
         if "--screenshot" not in args:
             args += ["--screenshot", "view.png", "--frames", "2"]
-        words = (["xvfb-run", "-a"] if words[0] != "xvfb-run" else []) + words
-        at = shaderbed_at(words)
+        if words[0] != "xvfb-run":
+            words, at = ["xvfb-run", "-a"] + words, at + 2
     return words[: at + 2] + args
 
 
