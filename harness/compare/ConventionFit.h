@@ -77,7 +77,10 @@ struct ConventionFit {
 // Every explanation the evidence allows, fitting ones first, each group by residual.
 // Empty when there is nothing to explain: no interior pixel the render drew with finite
 // colour fails the plain comparison (the render passes, or fails only on coverage or
-// non-finite values, which no colour convention explains).
+// non-finite values, which no colour convention explains). When the render drew NaN/Inf
+// on interior pixels where the reference is finite (or the reverse), only counterfactuals
+// that are non-finite at exactly those pixels remain: no fit of the finite rest is offered
+// beside pixels it does not explain.
 // `classes`: classify_pixels(reference).
 std::vector<ConventionFit> explain_difference(const Image& render, const ReferenceImage& reference,
                                               const std::vector<PixelClass>& classes,
