@@ -171,7 +171,8 @@ TEST(Differential, NoConventionOfferedBesideNaN) {
       " --case minnaert_pow_nan --shape sphere --backend vulkan --size 64 --repeat 0 -q --json " + results);
   EXPECT_EQ(status, 1) << out;
   int nonfinite = 0;
-  for (const json& r : read_json(results)["results"]) {
+  const json j = read_json(results);
+  for (const json& r : j["results"]) {
     if (r["status"] != "fail" || r["metrics"]["nonfinite_mismatch"].get<size_t>() == 0) continue;
     ++nonfinite;
     EXPECT_TRUE(r["explanations"].empty()) << r["id"] << ": " << r["explanations"][0]["summary"];
