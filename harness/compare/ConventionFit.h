@@ -36,7 +36,8 @@
 //    (D3D9 pixel centres), best of the four signs. The resampling reads the reference at
 //    covered neighbours; every interior pixel has all eight, so no pixel is skipped.
 //  - each counterfactual: render ≈ that image (the reference re-rendered under a
-//    convention: light or eye negated, normal not renormalised, matrices transposed,
+//    convention: light or eye negated, normal not renormalised, L and V from the vertex
+//    stage, the faceted normal, matrices transposed,
 //    texture v flipped), fitted on pixels it covers, under the caller's name.
 // The N·L and |n| explanations need surface samples and each counterfactual its image:
 // without them (or with a size that does not match) they are absent from the list.
