@@ -6,6 +6,7 @@
 #include <expected>
 #include <glm/glm.hpp>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace reference {
@@ -25,6 +26,12 @@ struct ObjectSpaceLighting {
   glm::dvec3 light_direction;  // unit vector toward the directional light
   glm::dvec3 light_position;   // point light position
   glm::dvec3 eye_position;
+  // Set only under Perturbation::interpolated_light_eye: L and V as a shader that
+  // normalised them per vertex receives them per pixel (interpolated, not renormalised).
+  // Models take them as they are instead of building them from the positions; a point
+  // light's distance still comes from light_position.
+  std::optional<glm::dvec3> to_light;
+  std::optional<glm::dvec3> to_eye;
 };
 
 class LightingModel {

@@ -96,10 +96,20 @@ std::expected<Framebuffer, std::string> render(const Scene& scene, const std::st
 //  - unnormalised_normal: per pixel, shade with the interpolated normal as it arrives,
 //    not renormalised (a shader that forgot normalize()); per vertex, no change (the
 //    vertex normals are shaded as they are in the normal render).
+//  - interpolated_light_eye: per pixel, L and V are built at the three vertices (unit
+//    there), interpolated perspective-correctly to the pixel and shaded as they arrive,
+//    not renormalised (a shader that normalises them in its vertex stage); H, R and the
+//    rest are built from them per pixel as usual. A directional light's L is the same at
+//    every vertex, so only V (and a point light's L) change. Per vertex, no change.
+//  - faceted_normal: per pixel, shade with the triangle's geometric normal, turned to the
+//    side the vertex normals face, instead of the interpolated one (a normal rebuilt
+//    from screen-space derivatives, normalize(cross(ddx(P), ddy(P)))). Per vertex, no change.
 struct Perturbation {
   bool negate_light = false;
   bool negate_eye = false;
   bool unnormalised_normal = false;
+  bool interpolated_light_eye = false;
+  bool faceted_normal = false;
 };
 
 // render() under a perturbation; Perturbation{} gives exactly render()'s image.

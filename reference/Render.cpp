@@ -22,12 +22,16 @@ T interpolate(const std::array<uint32_t, 3>& corners, const glm::dvec3& weights,
 // Built here, once per shaded point, so no model needs to know about perturbations.
 class PointLighting {
  public:
-  PointLighting(const ObjectSpaceLighting& lighting, const Perturbation& perturbation, LightUse light_use)
+  PointLighting(const ObjectSpaceLighting& lighting, const Perturbation& perturbation, LightUse light_use,
+                SceneLight scene_light)
       : lighting_(lighting),
         perturbation_(perturbation),
         // Only the directional-light models take light_direction as L; the spot and Warn
         // lights take it as their axis, which L -> -L leaves alone.
-        negate_direction_(perturbation.negate_light && light_use == LightUse::directional) {}
+        negate_direction_(perturbation.negate_light && light_use == LightUse::directional),
+        point_lit_(light_use == LightUse::point || light_use == LightUse::spot ||
+                   (light_use == LightUse::directional && scene_light == SceneLight::point)),
+        directional_(light_use == LightUse::directional) {}
 
   ObjectSpaceLighting at(const glm::dvec3& position) const {
     ObjectSpaceLighting at_point = lighting_;
@@ -39,10 +43,31 @@ class PointLighting {
     return at_point;
   }
 
+  // at(position), with L and V taken from the triangle's corners as a vertex stage would
+  // have passed them (Perturbation::interpolated_light_eye).
+  ObjectSpaceLighting at(const glm::dvec3& position, const std::array<glm::dvec3, 3>& corners,
+                         const glm::dvec3& weights) const {
+    ObjectSpaceLighting at_point = at(position);
+    if (!perturbation_.interpolated_light_eye) return at_point;
+    glm::dvec3 to_light(0.0), to_eye(0.0);
+    for (int i = 0; i < 3; ++i) {
+      const ObjectSpaceLighting at_corner = at(corners[i]);
+      to_light += weights[i] * (point_lit_ ? stable::normalize(at_corner.light_position - corners[i])
+                                           : at_corner.light_direction);
+      to_eye += weights[i] * stable::normalize(at_corner.eye_position - corners[i]);
+    }
+    at_point.to_eye = to_eye;
+    if (point_lit_) at_point.to_light = to_light;
+    else if (directional_) at_point.light_direction = to_light;
+    return at_point;
+  }
+
  private:
   ObjectSpaceLighting lighting_;
   Perturbation perturbation_;
   bool negate_direction_;
+  bool point_lit_;     // L = normalize(light_position - P)
+  bool directional_;   // L = light_direction
 };
 
 // Per vertex: shade each vertex with its own (unit) normal; pixels interpolate colours.
@@ -56,14 +81,24 @@ std::vector<glm::dvec3> shade_vertices(const Mesh& mesh, const LightingModel& mo
   return colours;
 }
 
+// The triangle's geometric normal, unit, on the side `towards` points to.
+glm::dvec3 facet_normal(const std::array<glm::dvec3, 3>& corners, const glm::dvec3& towards) {
+  const glm::dvec3 normal = stable::normalize(glm::cross(corners[1] - corners[0], corners[2] - corners[0]));
+  return glm::dot(normal, towards) < 0 ? -normal : normal;
+}
+
 // Per pixel: interpolate the vertex attributes as given (like the varyings a vertex
-// shader passes through), normalise the normal (unless the perturbation says not to),
-// shade.
+// shader passes through), normalise the normal (unless the perturbation says not to, or
+// replaces it with the facet's), shade.
 glm::dvec3 shade_pixel(const Mesh& mesh, const VisibleSample& sample, const LightingModel& model,
                        const PointLighting& lighting, const Perturbation& perturbation) {
   SurfacePoint point = interpolate_surface(mesh, sample);
-  if (!perturbation.unnormalised_normal) point.normal = stable::normalize(point.normal);
-  return model.shade(point, lighting.at(point.position));
+  const std::array<uint32_t, 3> indices = triangle_corners(mesh, sample);
+  const std::array<glm::dvec3, 3> corners{mesh.vertices[indices[0]].position, mesh.vertices[indices[1]].position,
+                                          mesh.vertices[indices[2]].position};
+  if (perturbation.faceted_normal) point.normal = facet_normal(corners, point.normal);
+  else if (!perturbation.unnormalised_normal) point.normal = stable::normalize(point.normal);
+  return model.shade(point, lighting.at(point.position, corners, sample.weights));
 }
 
 }  // namespace
@@ -81,7 +116,8 @@ std::expected<Framebuffer, std::string> render_with(const Scene& scene, const Li
   if (!visibility) return std::unexpected(visibility.error());
 
   const Mesh& mesh = scene.mesh;
-  const PointLighting lighting(to_object_space(scene.lights, scene.camera, scene.world), perturbation, light);
+  const PointLighting lighting(to_object_space(scene.lights, scene.camera, scene.world), perturbation, light,
+                              scene.light);
   const std::vector<glm::dvec3> vertex_colours =
       mode == Mode::per_vertex ? shade_vertices(mesh, model, lighting) : std::vector<glm::dvec3>{};
 

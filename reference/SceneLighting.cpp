@@ -10,14 +10,14 @@ namespace reference {
 namespace {
 
 // A directional-light model lit by the point light: its light_direction becomes
-// normalize(light_position - P) at every point it shades.
+// normalize(light_position - P) at every point it shades (or L as a perturbation gives it).
 class PointLit final : public LightingModel {
  public:
   explicit PointLit(std::unique_ptr<const LightingModel> model) : model_(std::move(model)) {}
 
   glm::dvec3 shade(const SurfacePoint& point, const ObjectSpaceLighting& lighting) const override {
     ObjectSpaceLighting at_point = lighting;
-    at_point.light_direction = stable::normalize(lighting.light_position - point.position);
+    at_point.light_direction = lighting.to_light.value_or(stable::normalize(lighting.light_position - point.position));
     return model_->shade(point, at_point);
   }
 

@@ -414,6 +414,30 @@ bool same_size(const SurfaceSamples& surface, const ReferenceImage& reference) {
          surface.n_dot_v.size() == count && surface.normal_length.size() == count;
 }
 
+// Interior pixels the render drew where exactly one of render and reference is NaN/Inf:
+// what no colour convention can produce from a finite reference (or remove from it).
+std::vector<size_t> nonfinite_mismatches(const Image& render, const ReferenceImage& reference,
+                                         const std::vector<PixelClass>& classes) {
+  std::vector<size_t> pixels;
+  for (size_t pixel = 0; pixel < classes.size(); ++pixel) {
+    if (classes[pixel] != PixelClass::interior || !render.coverage[pixel]) continue;
+    const float* p = &render.rgba[pixel * 4];
+    const double* r = &reference.rgba[pixel * 4];
+    if (finite(Rgb{p[0], p[1], p[2]}) != finite(Rgb{r[0], r[1], r[2]})) pixels.push_back(pixel);
+  }
+  return pixels;
+}
+
+// Whether a counterfactual's image is finite exactly where the render is, at `pixels`:
+// then it explains the NaN/Inf too, and may be offered beside them.
+bool same_nonfinite(const Image& render, const ReferenceImage& image, const std::vector<size_t>& pixels) {
+  return std::ranges::all_of(pixels, [&](size_t pixel) {
+    const float* p = &render.rgba[pixel * 4];
+    const double* q = &image.rgba[pixel * 4];
+    return image.coverage[pixel] && finite(Rgb{p[0], p[1], p[2]}) == finite(Rgb{q[0], q[1], q[2]});
+  });
+}
+
 }  // namespace
 
 std::vector<ConventionFit> explain_difference(const Image& render, const ReferenceImage& reference,
@@ -435,6 +459,14 @@ std::vector<ConventionFit> explain_difference(const Image& render, const Referen
   gamma(in, fits);
   clamping(in, fits);
   half_pixel_offset(in, fits);
+  // NaN/Inf the reference does not have (or the reverse): a convention fitted on the
+  // finite pixels around them would be offered for a cell it does not explain. Only a
+  // counterfactual with the same non-finite pixels stays.
+  if (const std::vector<size_t> mismatches = nonfinite_mismatches(render, reference, classes); !mismatches.empty())
+    std::erase_if(fits, [&](const ConventionFit& fit) {
+      const auto same = std::ranges::find(evidence.counterfactuals, fit.name, &Counterfactual::name);
+      return same == evidence.counterfactuals.end() || !same_nonfinite(render, *same->image, mismatches);
+    });
   std::stable_sort(fits.begin(), fits.end(), better);
   return fits;
 }

@@ -36,7 +36,8 @@
 //    (D3D9 pixel centres), best of the four signs. The resampling reads the reference at
 //    covered neighbours; every interior pixel has all eight, so no pixel is skipped.
 //  - each counterfactual: render ≈ that image (the reference re-rendered under a
-//    convention: light or eye negated, normal not renormalised, matrices transposed,
+//    convention: light or eye negated, normal not renormalised, L and V from the vertex
+//    stage, the faceted normal, matrices transposed,
 //    texture v flipped), fitted on pixels it covers, under the caller's name.
 // The N·L and |n| explanations need surface samples and each counterfactual its image:
 // without them (or with a size that does not match) they are absent from the list.
@@ -77,7 +78,10 @@ struct ConventionFit {
 // Every explanation the evidence allows, fitting ones first, each group by residual.
 // Empty when there is nothing to explain: no interior pixel the render drew with finite
 // colour fails the plain comparison (the render passes, or fails only on coverage or
-// non-finite values, which no colour convention explains).
+// non-finite values, which no colour convention explains). When the render drew NaN/Inf
+// on interior pixels where the reference is finite (or the reverse), only counterfactuals
+// that are non-finite at exactly those pixels remain: no fit of the finite rest is offered
+// beside pixels it does not explain.
 // `classes`: classify_pixels(reference).
 std::vector<ConventionFit> explain_difference(const Image& render, const ReferenceImage& reference,
                                               const std::vector<PixelClass>& classes,

@@ -18,6 +18,15 @@ std::string best_explanation(const CellResult& r) {
   return "";
 }
 
+std::string withheld_explanation(const CellResult& r) {
+  if (!r.explanations.empty()) return "";
+  const CellMetrics& m = r.metrics;
+  if (m.nonfinite_mismatch > 0)
+    return fmt::format("{} pixel{} NaN/Inf", m.nonfinite_mismatch, m.nonfinite_mismatch == 1 ? " is" : "s are");
+  if (m.covered_pixels == 0 && m.reference_covered_pixels > 0) return "the render is blank";
+  return "";
+}
+
 std::string tolerance_text(double max_abs, double max_rel) {
   return max_rel > 0 ? fmt::format("{:.3g} + {:.3g}|ref|", max_abs, max_rel) : fmt::format("{:.3g}", max_abs);
 }

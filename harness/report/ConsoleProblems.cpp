@@ -8,6 +8,8 @@
 #include <fmt/format.h>
 
 #include "report/CellExplanation.h"
+#include "report/CellGroups.h"
+#include "report/ConsoleWrap.h"
 #include "report/FirstLine.h"
 
 namespace shaderbed {
@@ -49,46 +51,79 @@ bool print_warnings(const RunReport& report, std::FILE* out, bool blank_line_fir
   return true;
 }
 
+// One entry of a section: what the cells share (their message, then detail lines each
+// starting with the 6-space indent), for one cell or a group of cells.
+struct EntryText {
+  std::string message;
+  std::vector<std::string> details;
+};
+
+constexpr const char* kIndent = "      ";
+
+// The entry for `cells` (one or a group): "  where: message", for a group the cells it
+// covers on the next line, then the shared details and the first cell's images.
+void print_entry(const std::vector<const CellResult*>& cells, const EntryText& text, bool images, std::FILE* out) {
+  const std::string who = cells.size() == 1 ? where(*cells.front()) : group_where(cells);
+  fmt::print(out, "  {}: {}\n", who, fold_for_console(text.message, who.size() + 4, kIndent));
+  if (cells.size() > 1) fmt::print(out, "{}{}\n", kIndent, fold_for_console(group_cells_text(cells), 6, kIndent));
+  for (const std::string& line : text.details) fmt::print(out, "{}{}\n", kIndent, fold_for_console(line, 6, kIndent));
+  if (images) print_images(*cells.front(), out);
+}
+
+EntryText failure_text(const CellResult& r) {
+  EntryText t{r.message.empty() ? "failed" : first_line(r.message), {}};
+  t.details.push_back(fmt::format("attribution: {}{}", r.attribution.empty() ? "none" : r.attribution,
+                                  r.attribution_reason.empty() ? "" : " - " + r.attribution_reason));
+  if (const std::string best = best_explanation(r); !best.empty())
+    t.details.push_back("explained: " + best);
+  else if (!r.explanations.empty())
+    t.details.push_back("no convention explains it; closest: " + r.explanations.front().summary);
+  else if (const std::string withheld = withheld_explanation(r); !withheld.empty())
+    t.details.push_back("no convention offered: " + withheld);
+  if (const std::string against = judged_against(r); !against.empty()) t.details.push_back("judged against: " + against);
+  if (!r.reference_note.empty()) t.details.push_back("reference: " + r.reference_note);
+  return t;
+}
+
+EntryText known_text(const CellResult& r) {
+  EntryText t{r.message.empty() ? "failed" : first_line(r.message), {}};
+  t.details.push_back("known: " + (r.known_reason.empty() ? std::string("(no reason given)") : r.known_reason));
+  if (!r.attribution.empty()) t.details.push_back("attribution: " + r.attribution);
+  return t;
+}
+
 }  // namespace
 
 bool print_problems(const RunReport& report, std::FILE* out, bool blank_line_first) {
   bool printed = false;
-  auto section = [&](const char* title, auto&& wanted, auto&& body) {
-    bool header = false;
-    for (const CellResult& r : report.results) {
-      if (!wanted(r)) continue;
-      if (!header) fmt::print(out, "{}{}:\n", printed || blank_line_first ? "\n" : "", title);
-      header = printed = true;
-      body(r);
-    }
+  // Cells whose entry reads the same but for their own identity are printed once, with
+  // the cells it stands for (report/CellGroups.h).
+  auto section = [&](const char* title, auto&& wanted, auto&& text_of, bool images) {
+    std::vector<const CellResult*> cells;
+    for (const CellResult& r : report.results)
+      if (wanted(r)) cells.push_back(&r);
+    if (cells.empty()) return;
+    fmt::print(out, "{}{}:\n", printed || blank_line_first ? "\n" : "", title);
+    printed = true;
+    const auto key_of = [&](const CellResult& r) {
+      const EntryText t = text_of(r);
+      std::string key = t.message;
+      for (const std::string& line : t.details) key += "\n" + line;
+      return without_cell_identity(key, r);
+    };
+    for (const auto& group : group_cells(cells, key_of)) print_entry(group, text_of(*group.front()), images, out);
   };
+  const auto message_only = [](const CellResult& r) { return EntryText{r.message, {}}; };
+  const auto reason_only = [](const CellResult& r) { return EntryText{r.known_reason, {}}; };
   section("failures", [](const CellResult& r) { return r.status == CellStatus::fail && !r.known_failure; },
-          [&](const CellResult& r) {
-            fmt::print(out, "  {}: {}\n", where(r), r.message.empty() ? "failed" : first_line(r.message));
-            fmt::print(out, "      attribution: {}{}\n", r.attribution.empty() ? "none" : r.attribution,
-                       r.attribution_reason.empty() ? "" : " - " + r.attribution_reason);
-            if (const std::string best = best_explanation(r); !best.empty())
-              fmt::print(out, "      explained: {}\n", best);
-            else if (!r.explanations.empty())
-              fmt::print(out, "      no convention explains it; closest: {}\n", r.explanations.front().summary);
-            if (const std::string against = judged_against(r); !against.empty())
-              fmt::print(out, "      judged against: {}\n", against);
-            if (!r.reference_note.empty()) fmt::print(out, "      reference: {}\n", r.reference_note);
-            print_images(r, out);
-          });
-  section("errors", [](const CellResult& r) { return r.status == CellStatus::error; },
-          [&](const CellResult& r) { fmt::print(out, "  {}: {}\n", where(r), r.message); });
-  section("known", [](const CellResult& r) { return r.status == CellStatus::fail && r.known_failure; },
-          [&](const CellResult& r) {
-            fmt::print(out, "  {}: {}\n", where(r), r.message.empty() ? "failed" : first_line(r.message));
-            fmt::print(out, "      known: {}\n", r.known_reason.empty() ? "(no reason given)" : r.known_reason);
-            if (!r.attribution.empty()) fmt::print(out, "      attribution: {}\n", r.attribution);
-          });
-  section("skipped (the path does not apply to the shader)", [](const CellResult& r) { return r.status == CellStatus::skipped; },
-          [&](const CellResult& r) { fmt::print(out, "  {}: {}\n", where(r), r.message); });
+          failure_text, true);
+  section("errors", [](const CellResult& r) { return r.status == CellStatus::error; }, message_only, false);
+  section("known", [](const CellResult& r) { return r.status == CellStatus::fail && r.known_failure; }, known_text,
+          false);
+  section("skipped (the path does not apply to the shader)",
+          [](const CellResult& r) { return r.status == CellStatus::skipped; }, message_only, false);
   section("known failures that passed (remove them from the expectations)",
-          [](const CellResult& r) { return r.status == CellStatus::pass && r.known_failure; },
-          [&](const CellResult& r) { fmt::print(out, "  {}: {}\n", where(r), r.known_reason); });
+          [](const CellResult& r) { return r.status == CellStatus::pass && r.known_failure; }, reason_only, false);
   print_warnings(report, out, printed || blank_line_first) && (printed = true);
   return printed;
 }

@@ -20,15 +20,23 @@ class ModelReference final : public CellReference {
   const Result<ReferenceImage>* group_image() const override { return &image_; }
   bool notes_textures() const override { return true; }
 
-  // The model re-rendered with the light or eye negated, or the normal left unnormalised.
+  // The model re-rendered with the light or eye negated; per pixel also with the normal
+  // left unnormalised, L and V from the vertex stage, or the facet's normal (two causes
+  // public per-pixel shaders showed).
   std::vector<Redrawn> counterfactuals(GroupDrawer&) const override {
     const auto redraw = [&](const reference::Perturbation& p) { return render_reference(g_.mesh, g_.scene, *g_.group.c, mode_, p); };
     std::vector<Redrawn> out;
     out.push_back({redraw({.negate_light = true}), "negated_light", "the light vector negated (L → −L)"});
     out.push_back({redraw({.negate_eye = true}), "negated_eye", "the eye vector negated (V → −V)"});
-    if (mode_ == LightingMode::per_pixel)
+    if (mode_ == LightingMode::per_pixel) {
       out.push_back({redraw({.unnormalised_normal = true}), "unnormalised_normal_model",
                      "the interpolated normal not renormalised"});
+      out.push_back({redraw({.interpolated_light_eye = true}), "interpolated_light_eye",
+                     "L and V normalised per vertex and interpolated, not renormalised per pixel"});
+      out.push_back({redraw({.faceted_normal = true}), "faceted_normal",
+                     "the flat facet normal instead of the interpolated one (a normal from screen-space "
+                     "derivatives, cross(ddx(P), ddy(P)))"});
+    }
     return out;
   }
 

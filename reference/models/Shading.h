@@ -18,8 +18,9 @@ inline double sat(double x) { return std::max(0.0, x); }
 // (errata E9).
 inline double clamped_acos(double x) { return std::acos(std::clamp(x, -1.0, 1.0)); }
 
-// V = normalize(eye_position - P).
+// V = normalize(eye_position - P), or V as a perturbation gives it.
 inline glm::dvec3 to_eye(const SurfacePoint& point, const ObjectSpaceLighting& lighting) {
+  if (lighting.to_eye) return *lighting.to_eye;
   return stable::normalize(lighting.eye_position - point.position);
 }
 
@@ -86,7 +87,8 @@ inline double power_near_one(double c, double one_minus_c, double n) {
   return std::pow(std::max(0.0, c), n);
 }
 
-// The point light seen from P: Lp = normalize(light_position - P), d = |light_position - P|.
+// The point light seen from P: Lp = normalize(light_position - P), d = |light_position - P|;
+// Lp as a perturbation gives it, when it does (ObjectSpaceLighting::to_light).
 struct PointLight {
   glm::dvec3 direction;
   double distance;
@@ -94,6 +96,7 @@ struct PointLight {
 
 inline PointLight point_light(const SurfacePoint& point, const ObjectSpaceLighting& lighting) {
   const glm::dvec3 to_light = lighting.light_position - point.position;
+  if (lighting.to_light) return {*lighting.to_light, stable::length(to_light)};
   const double squared = glm::dot(to_light, to_light);
   // glm::length's form where the squares neither under- nor overflow; outside that (it
   // gave 0 or Inf at d = 1e-200 or 1e200, and NaN directions) the scaled forms, out of line.

@@ -355,6 +355,27 @@ TEST_F(ConventionFitTest, NothingToExplainGivesAnEmptyList) {
   EXPECT_TRUE(explain(wrong_size, lambert_ref, with_surface).fits.empty());
 }
 
+// NaN/Inf where the reference is finite: × π fits the finite rest, but it is not offered
+// beside pixels it cannot produce; a counterfactual with the same NaN/Inf is.
+TEST_F(ConventionFitTest, NoFitOfferedBesideNonFinitePixels) {
+  Image render = scaled_by_pi;
+  for (int x = 20; x < 30; ++x) render.pixel(x, 32)[1] = NAN;
+  render.pixel(40, 40)[0] = INFINITY;
+  EXPECT_TRUE(explain(render, lambert_ref, with_surface).fits.empty()) << explain(render, lambert_ref, with_surface).listing();
+  ReferenceImage same = reference_of(g, [&](size_t i) { return times(lambert(g, i), kPi); });
+  ReferenceImage elsewhere = same;
+  for (int x = 20; x < 30; ++x) same.rgba[(size_t(32) * g.size + x) * 4 + 1] = NAN;
+  same.rgba[(size_t(40) * g.size + 40) * 4] = INFINITY;
+  elsewhere.rgba[(size_t(10) * g.size + 32) * 4] = NAN;
+  const Counterfactual counterfactuals[] = {{"same_nonfinite", "NaN/Inf where the render has them", &same},
+                                            {"other_nonfinite", "NaN elsewhere", &elsewhere}};
+  const Explained explained = explain(render, lambert_ref, {.surface = &g.surface, .counterfactuals = counterfactuals});
+  ASSERT_EQ(explained.fits.size(), 1u) << explained.listing();
+  expect_first(explained, "same_nonfinite");
+  // Without NaN/Inf the same render is explained as before.
+  expect_first(explain(scaled_by_pi, lambert_ref, with_surface), "constant_factor");
+}
+
 // The relative part of the tolerance counts: a 0.1% error passes with max_rel = 2e-3.
 TEST_F(ConventionFitTest, RelativeToleranceCounts) {
   const Image render = render_of(lambert_ref, [](size_t, const Rgb& r) { return times(r, 1.001); });
@@ -443,22 +464,28 @@ TEST_F(ConventionFitOnTheReference, NamesThePerturbationThatMadeTheRender) {
   const ReferenceImage negated_light = to_reference_image(rendered({.negate_light = true}));
   const ReferenceImage negated_eye = to_reference_image(rendered({.negate_eye = true}));
   const ReferenceImage unnormalised = to_reference_image(rendered({.unnormalised_normal = true}));
+  const ReferenceImage interpolated = to_reference_image(rendered({.interpolated_light_eye = true}));
+  const ReferenceImage faceted = to_reference_image(rendered({.faceted_normal = true}));
   const Counterfactual counterfactuals[] = {
       {"negated_light", "the light vector negated (L → −L)", &negated_light},
       {"negated_eye", "the eye vector negated (V → −V)", &negated_eye},
       {"unnormalised_normal_image", "the interpolated normal not renormalised", &unnormalised},
+      {"interpolated_light_eye", "L and V normalised per vertex and interpolated", &interpolated},
+      {"faceted_normal", "the flat facet normal", &faceted},
   };
   const ConventionEvidence evidence{.surface = &samples, .counterfactuals = counterfactuals,
                                     .parameters = {{"power", 7}}};
-  for (const auto* planted : {&negated_light, &negated_eye, &unnormalised}) {
+  for (const auto* planted : {&negated_light, &negated_eye, &unnormalised, &interpolated, &faceted}) {
     const Image render = to_render({planted->width, planted->height, planted->rgba, planted->coverage});
     const Explained explained = explain(render, reference, evidence);
     ASSERT_FALSE(explained.fits.empty());
     const ConventionFit& first = explained.fits.front();
     EXPECT_TRUE(first.fits) << explained.listing();
-    const std::string expected = planted == &negated_light ? "negated_light"
-                                 : planted == &negated_eye ? "negated_eye"
-                                                           : "unnormalised_normal_image";
+    const std::string expected = planted == &negated_light  ? "negated_light"
+                                 : planted == &negated_eye  ? "negated_eye"
+                                 : planted == &interpolated ? "interpolated_light_eye"
+                                 : planted == &faceted      ? "faceted_normal"
+                                                            : "unnormalised_normal_image";
     EXPECT_EQ(first.name, expected) << explained.listing();
     EXPECT_TRUE(explained.find(expected)->fits);
     for (const Counterfactual& other : counterfactuals)

@@ -10,6 +10,7 @@
 #include "UvSphere.h"
 #include "reference/Reference.h"
 #include "reference/Surface.h"
+#include "reference/VisibleSurface.h"
 
 namespace reference {
 namespace {
@@ -164,6 +165,79 @@ TEST(Perturbation, NegatedEyeChangesPhongButNotLambert) {
 TEST(Perturbation, NegatedLightAlsoAppliesPerVertex) {
   const Scene scene = tessellated_sphere_scene(16, 12);
   EXPECT_NE(rendered(scene, "lambert", surface_lambert, {.negate_light = true}, Mode::per_vertex).rgba,
+            rendered(scene, "lambert", surface_lambert, {}, Mode::per_vertex).rgba);
+}
+
+// Calls expected(corners, weights, interpolated normal) at every covered pixel, from the
+// rasteriser's own triangles and perspective-correct weights, and compares the image.
+template <typename Expected>
+void expect_triangle_pixels(const Framebuffer& image, const Scene& scene, Expected expected, double tolerance = 1e-12) {
+  auto visibility = rasterise_scene(scene);
+  ASSERT_TRUE(visibility) << visibility.error();
+  size_t covered = 0;
+  for (size_t pixel = 0; pixel < visibility->samples.size(); ++pixel) {
+    const VisibleSample& sample = visibility->samples[pixel];
+    ASSERT_EQ(sample.covered(), image.coverage[pixel] != 0) << "pixel " << pixel;
+    if (!sample.covered()) continue;
+    ++covered;
+    std::array<glm::dvec3, 3> corners;
+    glm::dvec3 normal(0.0);
+    for (int i = 0; i < 3; ++i) {
+      const Vertex& v = scene.mesh.vertices[scene.mesh.indices[size_t(sample.triangle) * 3 + i]];
+      corners[i] = v.position;
+      normal += sample.weights[i] * v.normal;
+    }
+    const glm::dvec3 colour = expected(corners, sample.weights, normal);
+    for (int c = 0; c < 3; ++c) ASSERT_NEAR(image.rgba[pixel * 4 + c], colour[c], tolerance) << "pixel " << pixel;
+  }
+  EXPECT_GT(covered, 1000u);
+}
+
+// A point light's L built at the three corners, unit there, interpolated and not
+// renormalised: Lambert sees D·max(0, N·ΣwᵢLᵢ), with |ΣwᵢLᵢ| < 1 inside a triangle.
+TEST(Perturbation, InterpolatedLightEyeInterpolatesThePointLightsUnitVectors) {
+  Scene scene = tessellated_sphere_scene(8, 6);
+  scene.light = SceneLight::point;
+  const Framebuffer image = rendered(scene, "lambert", surface_lambert, {.interpolated_light_eye = true});
+  expect_triangle_pixels(image, scene, [&](const std::array<glm::dvec3, 3>& corners, const glm::dvec3& w, const glm::dvec3& n) {
+    glm::dvec3 to_light(0.0);
+    for (int i = 0; i < 3; ++i) to_light += w[i] * glm::normalize(scene.lights.position - corners[i]);
+    return surface_diffuse * std::max(0.0, glm::dot(glm::normalize(n), to_light));
+  });
+  EXPECT_NE(image.rgba, rendered(scene, "lambert", surface_lambert).rgba);
+}
+
+// V likewise; a directional light's L is the same at every corner, so Lambert under it
+// does not change, and nothing changes per vertex.
+TEST(Perturbation, InterpolatedLightEyeInterpolatesTheEyeVector) {
+  const Scene scene = tessellated_sphere_scene(8, 6);
+  const Framebuffer image = rendered(scene, "phong", phong, {.interpolated_light_eye = true});
+  expect_triangle_pixels(image, scene, [&](const std::array<glm::dvec3, 3>& corners, const glm::dvec3& w, const glm::dvec3& normal) {
+    glm::dvec3 to_eye(0.0);
+    for (int i = 0; i < 3; ++i) to_eye += w[i] * glm::normalize(scene.camera.eye - corners[i]);
+    const glm::dvec3 n = glm::normalize(normal), l = scene.lights.direction;
+    const glm::dvec3 r = glm::normalize(2.0 * n * glm::dot(n, l) - l);
+    return surface_diffuse * std::max(0.0, glm::dot(n, l)) + glm::dvec3(std::pow(std::max(0.0, glm::dot(r, to_eye)), 7.0));
+  }, 1e-9);
+  EXPECT_NE(image.rgba, rendered(scene, "phong", phong).rgba);
+  const Framebuffer lambert = rendered(scene, "lambert", surface_lambert, {.interpolated_light_eye = true});
+  const Framebuffer plain = rendered(scene, "lambert", surface_lambert);
+  for (size_t i = 0; i < plain.rgba.size(); ++i) ASSERT_NEAR(lambert.rgba[i], plain.rgba[i], 1e-12) << i;
+  EXPECT_EQ(rendered(scene, "phong", phong, {.interpolated_light_eye = true}, Mode::per_vertex).rgba,
+            rendered(scene, "phong", phong, {}, Mode::per_vertex).rgba);
+}
+
+// The facet's own normal, on the side the vertex normals face: one colour per triangle.
+TEST(Perturbation, FacetedNormalShadesEachTriangleWithItsGeometricNormal) {
+  const Scene scene = tessellated_sphere_scene(8, 6);
+  const Framebuffer image = rendered(scene, "lambert", surface_lambert, {.faceted_normal = true});
+  expect_triangle_pixels(image, scene, [&](const std::array<glm::dvec3, 3>& p, const glm::dvec3&, const glm::dvec3& normal) {
+    glm::dvec3 facet = glm::normalize(glm::cross(p[1] - p[0], p[2] - p[0]));
+    if (glm::dot(facet, normal) < 0) facet = -facet;
+    return surface_diffuse * std::max(0.0, glm::dot(facet, scene.lights.direction));
+  });
+  EXPECT_NE(image.rgba, rendered(scene, "lambert", surface_lambert).rgba);
+  EXPECT_EQ(rendered(scene, "lambert", surface_lambert, {.faceted_normal = true}, Mode::per_vertex).rgba,
             rendered(scene, "lambert", surface_lambert, {}, Mode::per_vertex).rgba);
 }
 

@@ -1,6 +1,7 @@
 // What `run` and `merge` print: by default the summary matrix (no per-cell rows), --table
 // every cell's row, --quiet only what did not pass and the totals; each ends with the
 // failures, errors and known failures and the totals line.
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -99,6 +100,111 @@ TEST(ConsoleReport, QuietIsTheProblemsAndTheTotals) {
   passing.results = {passing.results[0], passing.results[2]};
   EXPECT_EQ(console_printed(passing, {.view = ConsoleView::quiet}), "2 cells: 2 passed, 0 failed, 0 known, 0 errors in 2.5 s\n")
       << "nothing to say but the totals";
+}
+
+// A cell of `variant` `language` on backend/path `column` and `shape` with `status`.
+CellResult cell_of(const std::string& variant, const std::string& language, const std::string& column,
+                   const std::string& shape, CellStatus status, const std::string& message) {
+  CellResult r;
+  r.case_name = "lambert";
+  r.variant = variant;
+  r.language = language;
+  r.backend = column.substr(0, column.find('/'));
+  r.path = column.substr(column.find('/') + 1);
+  r.shape = shape;
+  r.status = status;
+  r.message = message;
+  return r;
+}
+
+// The longest line of `text`, in columns (× and → are one each).
+size_t widest_line(const std::string& text) {
+  size_t widest = 0, width = 0;
+  for (char c : text) {
+    if (c == '\n') widest = std::max(widest, width), width = 0;
+    else width += (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+  }
+  return std::max(widest, width);
+}
+
+// One bad binding errors alike on every path and shape: one entry with the cells it
+// stands for, not twelve; a message that names its own cell (an artefact under the shape's
+// folder) still groups, a different message does not, and a lone cell keeps its line.
+TEST(ConsoleReport, IdenticalErrorsAreOneEntryWithTheirCells) {
+  RunReport report;
+  const std::string unbound =
+      "cases/lambert.toml: bind: 3 uniforms cannot be bound: line 20: uniform 'LightVectr' of block '$Global' has no "
+      "binding in the case (add it under [bindings.<language>]); line 21: uniform 'DiffuseColr' of block '$Global' has "
+      "no binding in the case (add it under [bindings.<language>]); line 22: uniform 'Transfrm' of block '$Global' has "
+      "no binding in the case (add it under [bindings.<language>])";
+  for (const char* column : {"vulkan/spirv", "gl/spirv", "gl/cross"})
+    for (const char* shape : {"cone", "cube", "sphere", "torus"})
+      report.results.push_back(cell_of("pixel", "hlsl", column, shape, CellStatus::error, unbound));
+  for (const char* shape : {"sphere", "torus"})
+    report.results.push_back(cell_of("pixel", "glsl", "gl/glsl", shape, CellStatus::error,
+                                     std::string("link failed; see out/lambert/pixel/") + shape +
+                                         "/glsl-gl-glsl.frag.log"));
+  report.results.push_back(cell_of("pixel", "glsl", "vulkan/spirv", "sphere", CellStatus::error, "draw timed out"));
+  const std::string out = console_printed(report, {.view = ConsoleView::quiet});
+
+  EXPECT_EQ(lines(out, "  lambert pixel hlsl: cases/lambert.toml: bind: 3 uniforms", true), 1u) << out;
+  EXPECT_NE(out.find("\n      12 cells: vulkan/spirv, gl/spirv, gl/cross × cone, cube, sphere, torus\n"), std::string::npos)
+      << out;
+  EXPECT_EQ(lines(out, "  lambert pixel glsl: link failed; see out/lambert/pixel/sphere/glsl-gl-glsl.frag.log", true), 1u)
+      << out;
+  EXPECT_NE(out.find("\n      2 cells: gl/glsl sphere, torus\n"), std::string::npos) << out;
+  EXPECT_NE(out.find("\n  lambert pixel glsl vulkan/spirv sphere: draw timed out\n"), std::string::npos) << out;
+  EXPECT_EQ(lines(out, "  lambert", true), 3u) << out;
+  // The long message is folded for a terminal at spaces, under the entry, every word kept.
+  EXPECT_LE(widest_line(out), 100u) << out;
+  const size_t from = out.find("  lambert pixel hlsl: ") + 22, to = out.find("\n      12 cells");
+  ASSERT_LT(from, to) << out;
+  std::string unfolded = out.substr(from, to - from);
+  for (size_t at = unfolded.find("\n      "); at != std::string::npos; at = unfolded.find("\n      "))
+    unfolded.replace(at, 7, " ");
+  EXPECT_EQ(unfolded, unbound) << out;
+}
+
+// Failures group too when everything they print but the numbers of their own cell is the
+// same, e.g. a blank render on every path; different attributions stay apart.
+TEST(ConsoleReport, IdenticalFailuresGroupWithTheirAttribution) {
+  RunReport report;
+  for (const char* column : {"vulkan/spirv", "gl/spirv"}) {
+    CellResult r = cell_of("vertex", "cg", column, "torus", CellStatus::fail, "render coverage 0 pixels (blank render)");
+    r.attribution = "front end";
+    r.attribution_reason = "every cg render fails";
+    r.metrics.reference_covered_pixels = 900;
+    report.results.push_back(r);
+  }
+  report.results.back().attribution = "unclear";
+  const std::string out = console_printed(report, {.view = ConsoleView::quiet});
+  EXPECT_EQ(lines(out, "  lambert vertex cg ", true), 2u) << out;
+  report.results.back().attribution = "front end";
+  const std::string grouped = console_printed(report, {.view = ConsoleView::quiet});
+  EXPECT_NE(grouped.find("failures:\n  lambert vertex cg: render coverage 0 pixels (blank render)\n"
+                         "      2 cells: vulkan/spirv, gl/spirv torus\n"
+                         "      attribution: front end - every cg render fails\n"
+                         "      no convention offered: the render is blank\n"),
+            std::string::npos)
+      << grouped;
+}
+
+// A cell with NaN/Inf gets no convention fit (compare/ConventionFit.h); the console says why.
+TEST(ConsoleReport, SaysWhyNoConventionIsOffered) {
+  RunReport report;
+  CellResult r = cell_of("pixel", "hlsl", "vulkan/spirv", "sphere", CellStatus::fail, "478 NaN/Inf pixels");
+  r.metrics.nonfinite = r.metrics.nonfinite_mismatch = 478;
+  r.metrics.covered_pixels = r.metrics.reference_covered_pixels = 2000;
+  report.results.push_back(r);
+  const std::string out = console_printed(report, {.view = ConsoleView::quiet});
+  EXPECT_NE(out.find("\n      no convention offered: 478 pixels are NaN/Inf\n"), std::string::npos) << out;
+  // An explanation that holds (a counterfactual with the same NaN/Inf) is shown instead.
+  report.results[0].explanations.push_back(
+      {"negated_light", "re-rendered with L negated", 0, 0, 100, true, "matches the reference re-rendered with L negated"});
+  const std::string explained = console_printed(report, {.view = ConsoleView::quiet});
+  EXPECT_EQ(explained.find("no convention offered"), std::string::npos) << explained;
+  EXPECT_NE(explained.find("      explained: matches the reference re-rendered with L negated\n"), std::string::npos)
+      << explained;
 }
 
 }  // namespace
