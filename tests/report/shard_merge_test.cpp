@@ -64,5 +64,33 @@ TEST(ShardMerge, AnInterruptedShardIsNamed) {
   EXPECT_EQ(merged->interruption->reason, "b.json: interrupted by SIGINT after 1 of 9 cells");
 }
 
+TEST(ShardMerge, JobsOfAMatrixJoinWhenTheyReadTheSameCaseFilesWithTheSameToolchain) {
+  RunReport vulkan = shard("abc", "", "sphere"), gl = shard("abc", "", "sphere");
+  gl.results[0].backend = "gl";
+  vulkan.case_digests = gl.case_digests = {{"lambert", "d1"}};
+  vulkan.tools.vulkan_driver = "Mesa 22.3.6";   // a GL-only job knows no Vulkan driver
+  gl.tools.gl_driver = "Mesa 22.3.6";
+  auto merged = merge_shards({vulkan, gl}, {"vulkan.json", "gl.json"});
+  ASSERT_TRUE(merged) << merged.error().to_string();
+  EXPECT_EQ(merged->results.size(), 2u);
+  EXPECT_EQ(merged->tools.vulkan_driver, "Mesa 22.3.6");
+  EXPECT_EQ(merged->tools.gl_driver, "Mesa 22.3.6");
+
+  RunReport edited = gl;
+  edited.case_digests = {{"lambert", "d2"}};
+  auto other_file = merge_shards({vulkan, edited}, {"vulkan.json", "gl.json"});
+  ASSERT_FALSE(other_file);
+  EXPECT_NE(other_file.error().message.find("case lambert was read from another case file"), std::string::npos)
+      << other_file.error().to_string();
+
+  RunReport newer = gl;
+  newer.tools.gl_driver = "Mesa 24.0.0";
+  vulkan.tools.gl_driver = "Mesa 22.3.6";
+  auto other_driver = merge_shards({vulkan, newer}, {"vulkan.json", "gl.json"});
+  ASSERT_FALSE(other_driver);
+  EXPECT_NE(other_driver.error().message.find("another toolchain: the GL driver is Mesa 24.0.0"), std::string::npos)
+      << other_driver.error().to_string();
+}
+
 }  // namespace
 }  // namespace shaderbed

@@ -314,7 +314,7 @@ TEST(EndToEnd, UnknownModelIsBadInputAtItsLineBeforeAnythingRuns) {
   auto [status, out] = shaderbed_cli("run --cases-dir " + (dir / "cases").string());
   EXPECT_EQ(status, 2) << out;
   EXPECT_NE(out.find("typo.toml:2:"), std::string::npos) << out;
-  EXPECT_NE(out.find("unknown model 'phongg' (models: "), std::string::npos) << out;
+  EXPECT_NE(out.find("unknown model 'phongg' (did you mean 'phong'?)"), std::string::npos) << out;
   EXPECT_EQ(out.find("cells:"), std::string::npos) << "nothing ran\n" << out;
   fs::remove_all(dir);
 }

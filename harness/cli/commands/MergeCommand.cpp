@@ -49,9 +49,10 @@ Command add_merge_command(CLI::App& app) {
             }
             RunReport& merged = *joined;
             const RunCoverage coverage = run_coverage(merged);
-            fmt::print("merged {} file{}: {} cells of {} case{}\n", args->inputs.size(), args->inputs.size() == 1 ? "" : "s",
+            if (args->console.view != ConsoleView::quiet) fmt::print("merged {} file{}: {} cells of {} case{}\n", args->inputs.size(), args->inputs.size() == 1 ? "" : "s",
                        merged.results.size(), coverage.cases, coverage.cases == 1 ? "" : "s");
-            for (const std::string& line : coverage.lines) fmt::print("  {}\n", line);
+            if (args->console.view != ConsoleView::quiet)
+              for (const std::string& line : coverage.lines) fmt::print("  {}\n", line);
             if (!coverage.holes.empty())
               fmt::print("  no cells for {}: was a job of the matrix left out?\n", fmt::join(coverage.holes, ", "));
             print_console_report(merged, stdout, args->console);
