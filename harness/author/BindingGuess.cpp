@@ -445,6 +445,15 @@ UniformGuess guess_uniform(const UniformFacts& u, const GuessContext& c) {
       if (fits) return guessed({named(s)}, reason + " (object space)");
     }
   }
+  // A lone int or bool is a switch (`uniform bool halfLambert;`): off draws the shader's
+  // plain path; the doubt lets init's check try it on when the run says so.
+  if (!u.is_float && u.vecsize == 1 && u.columns == 1 && !u.array_size) {
+    UniformGuess off = guessed({BindingSource{.name = "", .literal = {0.0}}},
+                               "a guess: " + q + " is a switch (int or bool), off; set 1 (true) for its other path");
+    off.doubt = "off or on";
+    off.alternatives.push_back(guessed({BindingSource{.name = "", .literal = {1.0}}}, "the switch " + q + " on"));
+    return off;
+  }
   UniformGuess todo;
   todo.reason = todo_text(u, c);
   todo.placeholder = zeros(value_count(u));

@@ -37,6 +37,7 @@ struct UniformFacts {
   // What the declaration's comment says its components mean: `// rgb = colour, w = specular
   // power` -> {{"rgb", "colour"}, {"w", "specular power"}}.
   std::vector<std::pair<std::string, std::string>> component_meanings;
+  bool read = true;             // some stage's compiled code reads it (else it needs no binding)
 };
 
 // What holds for the whole shader of one language.

@@ -212,7 +212,8 @@ CaseDraft draft_case(const std::vector<SurveyedLanguage>& languages, const std::
     if (lg.uniforms.empty()) continue;
     w.header(table);
     for (const auto& [u, g] : lg.uniforms) {
-      if (g.bound_by_default) w.commented("# " + toml_key(u->name), g.reason);
+      if (!u->read) w.commented("# " + toml_key(u->name), "declared but never read by the compiled shader: needs no binding");
+      else if (g.bound_by_default) w.commented("# " + toml_key(u->name), g.reason);
       else if (g.todo()) w.todo("# " + toml_entry(u->name, float_list(g.placeholder)), g.reason + ", under [" + table + "]");
       else {
         if (g.unsure() || !g.alternatives.empty())
@@ -285,6 +286,11 @@ CaseDraft draft_case(const std::vector<SurveyedLanguage>& languages, const std::
       if (b.kind == SamplerKind::sampler) {
         w.commented(toml_entry(b.name, toml_inline_table(sampling_entries())),
                     port ? sampling_why : "a guess: a sampler state's usual settings");
+        continue;
+      }
+      if (!b.read) {
+        w.commented("# " + toml_entry(b.name, toml_inline_table({{"file", toml_string("FILE.png")}})),
+                    "declared but never sampled by the compiled shader: needs no texture");
         continue;
       }
       if (b.cube) {

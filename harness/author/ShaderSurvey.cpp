@@ -141,9 +141,12 @@ void collect_reflection(SurveyedLanguage& out, const CompiledProgram& program, c
     const std::string& text = module == &program.vertex ? vertex_text : fragment_text;
     for (const UniformBlock& block : module->reflection.uniform_blocks)
       for (const UniformMember& m : block.members) {
-        if (!seen.insert(m.name).second) continue;
+        if (!seen.insert(m.name).second) {   // declared in both stages: read if either reads it
+          for (UniformFacts& known : out.uniforms) known.read |= known.name == m.name && m.read;
+          continue;
+        }
         UniformFacts u{.name = m.name, .is_float = m.is_float, .vecsize = m.vecsize, .columns = m.columns,
-                       .array_size = m.array_size};
+                       .array_size = m.array_size, .read = m.read};
         if (out.language != Language::glsl) {
           u.semantic = declared_semantic(text, m.name);
           u.hlsl_register = block.name.empty() ? -1 : declared_register(text, m.name);
@@ -160,6 +163,8 @@ void collect_reflection(SurveyedLanguage& out, const CompiledProgram& program, c
       }
     for (const SamplerBinding& s : module->reflection.samplers)
       if (seen_samplers.insert(s.name).second) out.samplers.push_back(s);
+      else
+        for (SamplerBinding& known : out.samplers) known.read |= known.name == s.name && s.read;
   }
   out.inputs = program.vertex.reflection.inputs;
 }

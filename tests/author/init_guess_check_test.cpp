@@ -185,4 +185,31 @@ TEST(InitGuessCheck, VerdictStandsWhenNoGuessIsInDoubt) {
   EXPECT_NE(r.out.find("glsl: 16 cells failed (port: "), std::string::npos) << r.out;
 }
 
+// The real-world corpus's front-end styles (tests/realworld/extensions): a bool switch is
+// guessed off, not a TODO, and a uniform or sampler the compiled shader never reads needs
+// no binding, so init ends with nothing for the user to fill in.
+void copy_realworld(const TempDir& dir, const std::string& folder) {
+  fs::copy(fs::path(SHADERBED_SOURCE_DIR) / "tests/realworld" / folder, dir.path(), fs::copy_options::recursive);
+}
+
+TEST(InitGuessCheck, ABoolSwitchIsGuessedOffNotLeftAsATodo) {
+  TempDir dir("init_bool_switch");
+  copy_realworld(dir, "extensions");
+  const Init r = init(dir, "half_lambert.vsh half_lambert.fsh", "half_lambert.toml");
+  EXPECT_EQ(r.status, 0) << r.out;
+  EXPECT_TRUE(has_line(r.case_text, "halfLambert = 0.0"));
+  EXPECT_EQ(r.case_text.find("TODO"), std::string::npos) << r.case_text;
+  EXPECT_NE(r.out.find("16 cells: 16 passed"), std::string::npos) << r.out;
+}
+
+TEST(InitGuessCheck, WhatTheShaderNeverReadsNeedsNoBinding) {
+  TempDir dir("init_unread");
+  copy_realworld(dir, "extensions");
+  const Init r = init(dir, "lambert_vertex.glsl lambert_fragment.glsl", "lambert_vertex.toml");
+  EXPECT_EQ(r.status, 0) << r.out;
+  EXPECT_EQ(r.case_text.find("TODO"), std::string::npos) << r.case_text;
+  EXPECT_NE(r.case_text.find("# uTime"), std::string::npos) << r.case_text;
+  EXPECT_NE(r.case_text.find("never sampled by the compiled shader"), std::string::npos) << r.case_text;
+}
+
 }  // namespace

@@ -111,7 +111,8 @@ TEST(InitCli, HlslSm5WithCbuffersAndATexture) {
   EXPECT_TRUE(has_binding(c, R"(viewMatrix = { value = "view", layout = "row_vector" })"));
   EXPECT_TRUE(has_binding(c, R"(projectionMatrix = { value = "projection", layout = "row_vector" })"));
   EXPECT_TRUE(has_binding(c, R"(diffuseColor = ["diffuse", 1.0])"));
-  EXPECT_TRUE(has_binding(c, "padding = 0.0"));
+  EXPECT_NE(c.find("# padding                                   # declared but never read by the compiled shader"),
+            std::string::npos) << c;   // a cbuffer's padding needs no binding
   EXPECT_TRUE(has_binding(c, R"(shaderTexture = { file = "tan_constant.png" })"));
   EXPECT_TRUE(has_binding(c, R"(SampleType = { filter = "linear", address = "wrap" })"));
 }
