@@ -37,6 +37,7 @@ ojson cell_json(const CellResult& r) {
                 {"shape", r.shape},
                 {"status", to_string(r.status)},
                 {"message", r.message}};
+  if (!r.error_stage.empty()) cell["error_stage"] = r.error_stage;
   cell["attribution"] = {{"verdict", r.attribution}, {"reason", r.attribution_reason}};
   cell["known_failure"] = {{"known", r.known_failure}, {"reason", r.known_reason}};
   if (!r.reference_note.empty()) cell["reference_note"] = r.reference_note;
@@ -209,6 +210,7 @@ CellResult read_cell(const json& c, const std::string& p) {
     throw BadField{child(p, "status"), "expected \"pass\", \"fail\", \"error\" or \"skipped\", found \"" + status + "\""};
   r.status = *parsed;
   read(c, "message", p, r.message);
+  read(c, "error_stage", p, r.error_stage);
   if (const json* a = object_at(c, "attribution", p)) {
     read(*a, "verdict", child(p, "attribution"), r.attribution);
     read(*a, "reason", child(p, "attribution"), r.attribution_reason);

@@ -107,6 +107,9 @@ struct CellResult {
   std::string case_name, variant, language, backend, path, shape;
   CellStatus status = CellStatus::error;
   std::string message;              // why it failed / the error line
+  // Errors: the stage that refused the cell ("bind", "compile", "draw", ...; core/Error.h),
+  // so a case's own mistake (an unbound uniform) can be told from a tool's failure.
+  std::string error_stage;
   // Failures: which stage the evidence points at ("front end", "cross-compiler",
   // "driver", "model/reference", "unclear") and why; "" for passes.
   std::string attribution;

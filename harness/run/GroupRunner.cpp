@@ -145,6 +145,7 @@ struct GroupRunner::Impl final : GroupDrawer {
       if (!judged) {
         r.status = judged.error().skipped ? CellStatus::skipped : CellStatus::error;
         r.message = judged.error().to_string();
+        if (!judged.error().skipped) r.error_stage = to_string(judged.error().stage);
       } else {
         if (r.reference.is_reference)
           r.message = "the reference: every other cell of this case is judged against this render of the original";

@@ -305,6 +305,43 @@ TEST(EndToEnd, UnwritableOutputsAreBadInputBeforeAnythingRuns) {
   fs::remove(file);
 }
 
+// A case's own mistakes are bad input (exit 2), each said once with its line: a binding name
+// that is no quantity (before anything is drawn, with "did you mean"), a missing shader file,
+// and a uniform the shader reads that the case leaves unbound.
+TEST(EndToEnd, ACasesOwnMistakesAreBadInputWithTheirLine) {
+  const fs::path dir = fs::temp_directory_path() / ("shaderbed_case_mistakes_" + std::to_string(::getpid()));
+  fs::create_directories(dir / "cases");
+  fs::create_directories(dir / "glsl");
+  for (const char* f : {"setup.vert", "lambert.frag"}) fs::copy_file(kSource / "shaders/glsl" / f, dir / "glsl" / f);
+  const auto write_case = [&](const std::string& fragment, const std::string& bindings) {
+    std::ofstream(dir / "cases" / "mine.toml", std::ios::trunc)
+        << "model = \"lambert\"\n[variants.pixel]\nglsl = { vertex = \"glsl/setup.vert\", fragment = \"glsl/" << fragment
+        << "\" }\n[bindings.glsl]\nmodelViewProjection = \"transform\"\n" << bindings;
+    return "run --shape sphere --case " + (dir / "cases" / "mine.toml").string();
+  };
+  auto [typo_status, typo] = shaderbed_cli(write_case("lambert.frag", "lightDirection = \"light_vectr\"\ndiffuseColor = \"diffuse\"\n"));
+  EXPECT_EQ(typo_status, 2) << typo;
+  EXPECT_NE(typo.find("mine.toml:6:"), std::string::npos) << typo;
+  EXPECT_NE(typo.find("lightDirection = 'light_vectr': neither a scene quantity nor a parameter of the case (did you mean "
+                      "'light_vector'?)"),
+            std::string::npos)
+      << typo;
+  EXPECT_EQ(typo.find("cells:"), std::string::npos) << "nothing ran\n" << typo;
+
+  auto [missing_status, missing] = shaderbed_cli(write_case("lambrt.frag", "lightDirection = \"light_vector\"\n"));
+  EXPECT_EQ(missing_status, 2) << missing;
+  EXPECT_NE(missing.find("the glsl fragment shader " + (dir / "glsl" / "lambrt.frag").string() + " does not exist"),
+            std::string::npos)
+      << missing;
+  EXPECT_EQ(missing.find("cells:"), std::string::npos) << "nothing ran\n" << missing;
+
+  auto [unbound_status, unbound] = shaderbed_cli(write_case("lambert.frag", "lightDirection = \"light_vector\"\n"));
+  EXPECT_EQ(unbound_status, 2) << unbound;
+  EXPECT_NE(unbound.find("bind: uniform 'diffuseColor'"), std::string::npos) << unbound;
+  EXPECT_NE(unbound.find("4 cells could not be bound"), std::string::npos) << unbound;
+  fs::remove_all(dir);
+}
+
 TEST(EndToEnd, UnknownModelIsBadInputAtItsLineBeforeAnythingRuns) {
   const fs::path dir = fs::temp_directory_path() / ("shaderbed_badmodel_" + std::to_string(::getpid()));
   fs::create_directories(dir / "cases");

@@ -1,5 +1,6 @@
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <memory>
 
@@ -119,6 +120,16 @@ Command add_run_command(CLI::App& app) {
                          options.cell.save_images_dir);
             // Interrupted: the cells it had are written above, marked incomplete.
             if (report->interruption) return 128 + report->interruption->signal;
+            // A uniform the case leaves unbound is the case's mistake, found before its cells
+            // were drawn: bad input, like a missing shader file.
+            const size_t unbound = std::ranges::count_if(report->results, [](const CellResult& r) {
+              return r.status == CellStatus::error && r.error_stage == "bind";
+            });
+            if (unbound) {
+              fmt::print(stderr, "shaderbed: {} cell{} could not be bound: the case leaves a uniform without a binding "
+                                 "(listed above)\n", unbound, unbound == 1 ? "" : "s");
+              return kExitBadInput;
+            }
             return report->acceptable() ? 0 : kExitFail;
           }};
 }
