@@ -265,6 +265,20 @@ TEST(EndToEnd, OneWorkerAndThreeWorkersGiveTheSameResults) {
   fs::remove_all(dir);
 }
 
+// --html alone still shows the pictures: the renders go beside index.html.
+TEST(EndToEnd, AnHtmlReportWithoutOutHasItsImages) {
+  const fs::path dir = fs::temp_directory_path() / ("shaderbed_html_only_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  auto [status, out] = shaderbed_cli("run --case lambert --shape cube --variant pixel --lang glsl --size 32 --html " +
+                                     (dir / "html").string());
+  ASSERT_EQ(status, 0) << out;
+  std::ifstream in(dir / "html" / "index.html");
+  const std::string html((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(html.find("Images: 0 embedded"), std::string::npos) << "a report without pictures";
+  EXPECT_TRUE(fs::exists(dir / "html" / "lambert" / "pixel" / "cube")) << "the renders beside index.html";
+  fs::remove_all(dir);
+}
+
 TEST(EndToEnd, ChartsFromSweepsGoIntoTheHtmlReport) {
   const fs::path dir = fs::temp_directory_path() / ("shaderbed_chart_" + std::to_string(::getpid()));
   fs::remove_all(dir);
