@@ -330,11 +330,37 @@ struct GroupRunner::Impl final : GroupDrawer {
                                   "the original, {}: the port's source computes something else",
                                   failing.size(), spread, reference_label);
     }
+    // Never blame the port for what the original does itself: a failing port render that
+    // agrees with the original's own render on the same backend (its same path first) shows
+    // that backend's difference from the reference (a derivative's sign, a texel step),
+    // which a run filtered to that backend cannot see from the other renders.
+    const auto original_agrees_on = [&](size_t i) -> std::string {
+      if (!g.c->reference_render) return "";
+      const CellResult& r = results[rendered[i]];
+      const std::string original = to_string(g.c->reference_render->language);
+      if (r.language == original) return "";
+      std::optional<size_t> same;
+      for (size_t j = 0; j < rendered.size(); ++j) {
+        const CellResult& o = results[rendered[j]];
+        if (o.language == original && o.backend == r.backend && (!same || o.path == r.path)) same = j;
+      }
+      if (!same) return "";
+      const Image* pair[] = {&images[i], &images[*same]};
+      if (renders_max_difference(pair, classes_) > t.interior) return "";
+      return results[rendered[*same]].backend + "/" + results[rendered[*same]].path;
+    };
     for (size_t i = 0; i < rendered.size() && i < verdicts.size(); ++i) {
       CellResult& r = results[rendered[i]];
       const Verdict& v = verdicts[i];
       const bool geometry = v.attribution == Attribution::matrix_convention;
-      if (!port_reason.empty() && r.status == CellStatus::fail && !geometry) {
+      const bool the_original = g.c->reference_render && r.language == to_string(g.c->reference_render->language);
+      const std::string original_path = port_reason.empty() || r.status != CellStatus::fail ? "" : original_agrees_on(i);
+      if (!original_path.empty() && !geometry) {
+        r.attribution = "driver";
+        r.attribution_reason = fmt::format("the original drawn on {} differs from {} as this render does (they agree "
+                                           "within the interior threshold), so not the port's source: {}",
+                                           original_path, reference_label, v.reason);
+      } else if (!port_reason.empty() && r.status == CellStatus::fail && !geometry && !the_original) {
         r.attribution = "port";
         r.attribution_reason = port_reason;
       } else {

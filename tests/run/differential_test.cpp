@@ -182,6 +182,57 @@ TEST(Differential, NoConventionOfferedBesideNaN) {
   EXPECT_EQ(out.find("explained: "), std::string::npos) << out;
 }
 
+// The original and a correct port that shade by the window position: GL's window y runs
+// the other way, so on GL both differ from the original's Vulkan render alike. A run filtered
+// to GL sees no render that passes; still, neither the original's own renders nor a port
+// that agrees with the original on the same backend is blamed on the port's source.
+TEST(Differential, APortIsNotBlamedForWhatTheOriginalDoesOnTheSameBackend) {
+  shaderbed::test::TempDir dir("differential_same_backend");
+  dir.write("bands.hlsl", R"(// Horizontal bands by window position (a screen-space pattern, not a book model): the original.
+float4x4 Transform;
+struct VSOut { float4 pos : SV_Position; };
+VSOut vs_main(float4 pos : POSITION) { VSOut o; o.pos = mul(Transform, pos); return o; }
+float4 ps_main(VSOut i) : SV_Target { return float4(frac(i.pos.y / 16.0).xxx, 1); }
+)");
+  dir.write("bands.vert", R"(// Horizontal bands by window position (a screen-space pattern): the port's vertex stage.
+#version 330
+in vec3 position;
+uniform mat4 transform;
+void main() { gl_Position = transform * vec4(position, 1.0); }
+)");
+  dir.write("bands.frag", R"(// Horizontal bands by window position (a screen-space pattern): the port.
+#version 330
+out vec4 color;
+void main() { color = vec4(vec3(fract(gl_FragCoord.y / 16.0)), 1.0); }
+)");
+  const std::string the_case = dir.write("bands.toml", R"(reference = { language = "hlsl", backend = "vulkan", path = "spirv" }
+[variants.pixel]
+hlsl = { vertex = "bands.hlsl", fragment = "bands.hlsl", vertex_entry = "vs_main", fragment_entry = "ps_main" }
+glsl = { vertex = "bands.vert", fragment = "bands.frag" }
+[bindings.hlsl]
+Transform = "transform"
+[bindings.glsl]
+transform = "transform"
+[attributes.glsl]
+position = "position"
+)");
+  const std::string results = dir / "gl.json";
+  const auto [status, out] = shaderbed_cli("run --case " + the_case + " --backend gl --shape sphere --size 48 --repeat 0 -q --json " + results);
+  ASSERT_EQ(status, 1) << out;
+  int failing = 0;
+  const json j = read_json(results);
+  for (const json& r : j["results"]) {
+    if (r["status"] != "fail") continue;
+    ++failing;
+    EXPECT_NE(r["attribution"]["verdict"], "port") << r["id"] << ": " << r["attribution"]["reason"];
+    if (r["language"] == "glsl") {
+      EXPECT_NE(r["attribution"]["reason"].get<std::string>().find("the original drawn on gl/"), std::string::npos)
+          << r["id"] << ": " << r["attribution"]["reason"];
+    }
+  }
+  EXPECT_EQ(failing, 5);   // glsl on gl/glsl, gl/spirv, gl/cross; the original on gl/spirv, gl/cross
+}
+
 TEST(Differential, TheReferenceIsDrawnEvenWhenItsBackendIsFilteredOut) {
   const auto [status, out] = shaderbed_cli("run --case " + (kCorpus / "cases" / "glossy.toml").string() +
                                            " --variant port --backend gl --shape torus --size 48 --repeat 0 -q");
