@@ -11,7 +11,7 @@ namespace {
 
 // CLI11 names arguments it did not expect; say which command refused them and the nearest
 // option or command name, the way the case-file checks do.
-bool explain_unexpected(const CLI::App& app, const CLI::ExtrasError&) {
+bool explain_unexpected(const CLI::App& app) {
   const CLI::App* command = &app;
   for (const CLI::App* sub : app.get_subcommands()) command = sub;
   std::vector<std::string> names;
@@ -61,7 +61,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ExtrasError& e) {
-    if (!explain_unexpected(app, e)) app.exit(e);
+    if (!explain_unexpected(app)) app.exit(e);
     return shaderbed::kExitBadInput;
   } catch (const CLI::ParseError& e) {
     app.exit(e);

@@ -332,13 +332,12 @@ struct GroupRunner::Impl final : GroupDrawer {
     }
     // Never blame the port for what the original does itself: a failing port render that
     // agrees with the original's own render on the same backend (its same path first) shows
-    // that backend's difference from the reference (a derivative's sign, a texel step),
-    // which a run filtered to that backend cannot see from the other renders.
+    // that backend's difference from the reference (GL's window y, a texel step), which a run
+    // filtered to that backend cannot see from the other renders. port_reason is set only
+    // for a case judged against its original's render.
+    const std::string original = port_reason.empty() ? "" : to_string(g.c->reference_render->language);
     const auto original_agrees_on = [&](size_t i) -> std::string {
-      if (!g.c->reference_render) return "";
       const CellResult& r = results[rendered[i]];
-      const std::string original = to_string(g.c->reference_render->language);
-      if (r.language == original) return "";
       std::optional<size_t> same;
       for (size_t j = 0; j < rendered.size(); ++j) {
         const CellResult& o = results[rendered[j]];
@@ -353,14 +352,14 @@ struct GroupRunner::Impl final : GroupDrawer {
       CellResult& r = results[rendered[i]];
       const Verdict& v = verdicts[i];
       const bool geometry = v.attribution == Attribution::matrix_convention;
-      const bool the_original = g.c->reference_render && r.language == to_string(g.c->reference_render->language);
-      const std::string original_path = port_reason.empty() || r.status != CellStatus::fail ? "" : original_agrees_on(i);
-      if (!original_path.empty() && !geometry) {
+      const bool blameable = !port_reason.empty() && r.status == CellStatus::fail && !geometry && r.language != original;
+      const std::string original_path = blameable ? original_agrees_on(i) : "";
+      if (!original_path.empty()) {
         r.attribution = "driver";
         r.attribution_reason = fmt::format("the original drawn on {} differs from {} as this render does (they agree "
                                            "within the interior threshold), so not the port's source: {}",
                                            original_path, reference_label, v.reason);
-      } else if (!port_reason.empty() && r.status == CellStatus::fail && !geometry && !the_original) {
+      } else if (blameable) {
         r.attribution = "port";
         r.attribution_reason = port_reason;
       } else {

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "core/ClosestName.h"
 
@@ -15,11 +16,9 @@ bool wanted(const std::vector<std::string>& filter, const std::string& name) {
 Result<void> check_names(const std::vector<std::string>& given, const std::vector<std::string>& known, const char* what) {
   for (const std::string& g : given)
     if (std::find(known.begin(), known.end(), g) == known.end()) {
-      std::string list;
-      for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
       const std::string near = closest_name(g, std::vector<std::string_view>(known.begin(), known.end()));
       if (!near.empty()) return fail(ErrorStage::options, fmt::format("unknown {} '{}' (did you mean '{}'?)", what, g, near));
-      return fail(ErrorStage::options, fmt::format("unknown {} '{}' (known: {})", what, g, list));
+      return fail(ErrorStage::options, fmt::format("unknown {} '{}' (known: {})", what, g, fmt::join(known, ", ")));
     }
   return {};
 }
