@@ -38,6 +38,7 @@ const char* to_string(ErrorStage s) {
     case ErrorStage::texture: return "texture";
     case ErrorStage::validate: return "validate";
     case ErrorStage::viewer: return "viewer";
+    case ErrorStage::twin: return "twin";
     case ErrorStage::vulkan: return "vulkan";
     case ErrorStage::worker: return "worker";
   }

@@ -46,6 +46,7 @@ enum class ErrorStage {
   texture,
   validate,
   viewer,
+  twin,             // the shader's twin (twin/)
   vulkan,
   worker,
 };

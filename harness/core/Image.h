@@ -13,6 +13,9 @@ struct Image {
   int height = 0;
   std::vector<float> rgba;         // width * height * 4
   std::vector<uint8_t> coverage;   // width * height, 1 = covered
+  // The values before they were stored as float, from a backend that computes in double
+  // (the shader's twin); empty for the GPUs. Same layout as rgba.
+  std::vector<double> exact_rgba;
 
   Image() = default;
   Image(int w, int h) : width(w), height(h), rgba(size_t(w) * h * 4, 0.0f), coverage(size_t(w) * h, 0) {}

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "backends/twin/TwinRenderer.h"
 #include "scene/NameFilter.h"
 #include "scene/Primitives.h"
 
@@ -15,11 +16,25 @@ std::vector<BackendSlot> start_backends(const std::vector<std::string>& filter) 
   for (const char* name : {"vulkan", "gl"})
     if (wanted(filter, name))
       backends.push_back({name, std::string(name) == "vulkan" ? make_vulkan_backend() : make_gl_backend()});
+  // The twins are backends only by name: a case's `reference = { twin = ... }`, or a filter.
+  for (const std::string& name : filter)
+    if (auto precision = twin_backend_precision(name))
+      backends.push_back({name, std::unique_ptr<Backend>(std::make_unique<TwinRenderer>(*precision))});
   return backends;
 }
+
+std::optional<twin::Precision> twin_backend_precision(const std::string& name) {
+  twin::Precision p;
+  if (name.rfind("twin-", 0) != 0 || !twin::parse_precision(name.substr(5), p)) return std::nullopt;
+  return p;
+}
+
 std::vector<std::string> backends_to_start(const std::vector<Case>& cases, const std::vector<std::string>& filter) {
-  if (filter.empty()) return {};
-  std::vector<std::string> names = filter;
+  const bool any_twin = std::ranges::any_of(cases, [](const Case& c) {
+    return c.reference_render && twin_backend_precision(c.reference_render->backend);
+  });
+  if (filter.empty() && !any_twin) return {};
+  std::vector<std::string> names = filter.empty() ? std::vector<std::string>{"vulkan", "gl"} : filter;
   for (const Case& c : cases)
     if (c.reference_render && !wanted(names, c.reference_render->backend)) names.push_back(c.reference_render->backend);
   return names;
@@ -58,7 +73,8 @@ std::vector<CellGroup> plan_cells(const std::vector<Case>& cases, std::vector<Ba
         for (const auto& [language, files] : v.shaders) {
           if (!wanted(f.languages, to_string(language))) continue;
           for (BackendSlot& b : backends) {
-            if (!wanted(f.backends, b.name)) continue;
+            // A twin started only to draw a case's reference draws no cells unless a filter asks.
+            if (!wanted(f.backends, b.name) || (f.backends.empty() && twin_backend_precision(b.name))) continue;
             for (ShaderPath p : backend_paths(b.name, language)) group.cells.push_back({language, &b, p});
           }
         }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "backends/Backend.h"
+#include "twin/Precision.h"
 #include "scene/CaseFile.h"
 
 namespace shaderbed {
@@ -17,8 +18,11 @@ struct BackendSlot {
 };
 
 // A slot per backend the filter selects (empty = vulkan, gl), each started here; a backend
-// that cannot start is an error in its slot, so its cells report it.
+// that cannot start is an error in its slot, so its cells report it. "twin-double",
+// "twin-float" and "twin-half" start the shader's twin (backends/twin) in that precision.
 std::vector<BackendSlot> start_backends(const std::vector<std::string>& filter);
+// The precision a twin backend's name asks for; nothing for any other name.
+std::optional<twin::Precision> twin_backend_precision(const std::string& name);
 
 struct PlannedCell {
   Language language;

@@ -8,7 +8,9 @@
 namespace shaderbed {
 namespace {
 
+// A twin's render keeps its own precision (Image::exact_rgba).
 ReferenceImage as_reference(const Image& image) {
+  if (!image.exact_rgba.empty()) return {image.width, image.height, image.exact_rgba, image.coverage};
   return {image.width, image.height, std::vector<double>(image.rgba.begin(), image.rgba.end()), image.coverage};
 }
 

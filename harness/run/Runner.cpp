@@ -88,7 +88,8 @@ Result<std::vector<Case>> select_cases(const RunOptions& o) {
       if (std::find(variant_names.begin(), variant_names.end(), v.name) == variant_names.end())
         variant_names.push_back(v.name);
   if (auto ok = check_names(s.variants, variant_names, "variant"); !ok) return std::unexpected(ok.error());
-  if (auto ok = check_names(s.backends, {"vulkan", "gl"}, "backend"); !ok) return std::unexpected(ok.error());
+  if (auto ok = check_names(s.backends, {"vulkan", "gl", "twin-double", "twin-float", "twin-half"}, "backend"); !ok)
+    return std::unexpected(ok.error());
   if (auto ok = check_names(s.languages, {"glsl", "hlsl", "cg"}, "language"); !ok) return std::unexpected(ok.error());
   if (auto ok = check_names(s.shapes, shape_names(), "shape"); !ok) return std::unexpected(ok.error());
   const int size = o.cell.size;
@@ -197,6 +198,8 @@ Result<std::unique_ptr<SuitePlan>> plan_suite(const RunOptions& o) {
   plan->backend_names = backends_to_start(plan->cases, s.backends);
   for (const char* name : {"vulkan", "gl"})
     if (wanted(plan->backend_names, name)) plan->backends.push_back({name});
+  for (const std::string& name : plan->backend_names)
+    if (twin_backend_precision(name)) plan->backends.push_back({name});
   plan->groups = plan_cells(plan->cases, plan->backends, {s.variants, s.languages, s.shapes, s.backends});
   if (plan->groups.empty()) return fail(ErrorStage::options, "the filters select no cells");
   if (shard) plan->groups = select_shard(std::move(plan->groups), *shard);

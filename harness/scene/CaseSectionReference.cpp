@@ -11,13 +11,14 @@ namespace shaderbed::case_sections {
 namespace {
 
 // `reference = { language = "hlsl", backend = "vulkan", path = "spirv", variant = "pixel" }`
-// (a render of the original) or `reference = { images = "DIR" }` (a stored run).
+// (a render of the original), `reference = { language = "hlsl", twin = "double" }` (the
+// original executed by its twin, twin/) or `reference = { images = "DIR" }` (a stored run).
 Result<void> reference_source(const std::string& path, const std::filesystem::path& shader_root, const toml::node& node, Case& c) {
   const toml::table* t = node.as_table();
   if (!t)
     return std::unexpected(at(path, node, "reference must be a table: { language = \"hlsl\", backend = \"vulkan\", "
                                           "path = \"spirv\" } or { images = \"DIR\" }"));
-  if (auto ok = check_keys(path, *t, {"language", "backend", "path", "variant", "images"}, "reference"); !ok)
+  if (auto ok = check_keys(path, *t, {"language", "backend", "path", "variant", "images", "twin"}, "reference"); !ok)
     return ok;
   if (const toml::node* images = t->get("images")) {
     const auto dir = images->value<std::string>();
@@ -50,6 +51,17 @@ Result<void> reference_source(const std::string& path, const std::filesystem::pa
     if (r.path == "glsl" && r.language != Language::glsl)
       return std::unexpected(at(path, *p, "path = \"glsl\" is the native GL path of GLSL shaders; " +
                                               std::string(to_string(r.language)) + " runs on \"spirv\" or \"cross\""));
+  }
+  if (const toml::node* twin = t->get("twin")) {
+    // The original's twin draws on its own backend, from the Vulkan SPIR-V.
+    const std::string precision = twin->value_or(std::string());
+    if (precision != "double" && precision != "float" && precision != "half")
+      return std::unexpected(at(path, *twin, "reference twin must be \"double\", \"float\" or \"half\""));
+    if (t->get("backend") || t->get("path"))
+      return std::unexpected(at(path, node, "reference = { twin = ... } draws the original on the CPU: it takes no "
+                                            "backend or path"));
+    r.backend = "twin-" + precision;
+    r.path = "spirv";
   }
   if (const toml::node* variant = t->get("variant")) {
     r.variant = variant->value_or(std::string());

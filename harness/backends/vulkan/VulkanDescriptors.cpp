@@ -10,70 +10,12 @@
 namespace shaderbed::vulkan {
 namespace {
 
-bool same_member(const UniformMember& a, const UniformMember& b) {
-  return a.name == b.name && a.offset == b.offset && a.size == b.size && a.is_float == b.is_float &&
-         a.vecsize == b.vecsize && a.columns == b.columns && a.matrix_stride == b.matrix_stride &&
-         a.column_registers == b.column_registers && a.array_size == b.array_size && a.array_stride == b.array_stride;
-}
-
-bool same_block(const UniformBlock& a, const UniformBlock& b) {
-  return a.name == b.name && a.size == b.size &&
-         std::ranges::equal(a.members, b.members, [](const auto& x, const auto& y) { return same_member(x, y); });
-}
-
 std::string where(const UniformBlock& block) {
   return "uniform block '" + block.name + "' (set " + std::to_string(block.set) + ", binding " +
          std::to_string(block.binding) + ")";
 }
 
-// Adds the block (and member, unless the resolver already named it) to resolver errors,
-// so "no value" becomes an error a user can act on whichever resolver produced it.
-class BlockContextResolver final : public UniformResolver {
- public:
-  explicit BlockContextResolver(const UniformResolver& inner) : inner_(inner) {}
-  Result<std::vector<float>> value(const UniformBlock& block, const UniformMember& member) const override {
-    auto v = inner_.value(block, member);
-    if (v) return v;
-    Error e = std::move(v.error());
-    std::string context = where(block);
-    if (e.message.find(member.name) == std::string::npos) context += ", member '" + member.name + "'";
-    e.message = context + ": " + e.message;
-    return std::unexpected(std::move(e));
-  }
-
- private:
-  const UniformResolver& inner_;
-};
-
 }  // namespace
-
-Result<std::vector<UniformBlock>> program_uniform_blocks(const CompiledProgram& program) {
-  std::map<std::pair<uint32_t, uint32_t>, UniformBlock> by_binding;
-  for (const ShaderModule* module : {&program.vertex, &program.fragment}) {
-    for (const UniformBlock& block : module->reflection.uniform_blocks) {
-      auto [it, inserted] = by_binding.try_emplace({block.set, block.binding}, block);
-      if (!inserted && !same_block(it->second, block))
-        return std::unexpected(backend_error("the vertex and fragment shaders declare different uniform blocks at set " +
-                                             std::to_string(block.set) + ", binding " + std::to_string(block.binding) +
-                                             " ('" + it->second.name + "' and '" + block.name + "')"));
-    }
-  }
-  std::vector<UniformBlock> blocks;
-  for (auto& [key, block] : by_binding) blocks.push_back(std::move(block));
-  return blocks;
-}
-
-Result<std::vector<PackedBlock>> pack_uniform_blocks(const std::vector<UniformBlock>& blocks,
-                                                     const UniformResolver& resolver) {
-  const BlockContextResolver with_context(resolver);
-  std::vector<PackedBlock> packed;
-  for (const UniformBlock& block : blocks) {
-    auto bytes = pack_uniform_block(block, with_context);
-    if (!bytes) return std::unexpected(std::move(bytes.error()));
-    packed.push_back({block, std::move(*bytes)});
-  }
-  return packed;
-}
 
 Result<DescriptorBindings> DescriptorBindings::create(const VulkanDevice& device, const std::vector<PackedBlock>& blocks,
                                                      std::span<const TextureDescriptor> textures) {

@@ -10,7 +10,7 @@
 
 #include <vulkan/vulkan.h>
 
-#include "backends/UniformPacking.h"
+#include "backends/ProgramBindings.h"
 #include "backends/vulkan/VulkanDevice.h"
 #include "backends/vulkan/VulkanHandles.h"
 #include "backends/vulkan/VulkanMemory.h"
@@ -19,21 +19,6 @@
 #include "core/Error.h"
 
 namespace shaderbed::vulkan {
-
-// The union of both stages' uniform blocks, sorted by (set, binding). A block declared
-// at the same set/binding by both stages must be identical there. Samplers are left to
-// program_samplers (VulkanTextures).
-Result<std::vector<UniformBlock>> program_uniform_blocks(const CompiledProgram& program);
-
-struct PackedBlock {
-  UniformBlock block;
-  std::vector<std::byte> bytes;
-};
-
-// Every member of every block resolved and packed, before any Vulkan object exists, so
-// a missing binding fails fast. Errors name the block (and the member).
-Result<std::vector<PackedBlock>> pack_uniform_blocks(const std::vector<UniformBlock>& blocks,
-                                                     const UniformResolver& resolver);
 
 class DescriptorBindings {
  public:

@@ -163,36 +163,6 @@ VkFormat texture_format(TexelFormat format) {
   return VK_FORMAT_UNDEFINED;
 }
 
-Result<std::vector<SamplerBinding>> program_samplers(const CompiledProgram& program,
-                                                     const std::vector<UniformBlock>& blocks) {
-  std::map<std::pair<uint32_t, uint32_t>, SamplerBinding> by_binding;
-  for (const ShaderModule* module : {&program.vertex, &program.fragment}) {
-    for (const SamplerBinding& sampler : module->reflection.samplers) {
-      const auto block = std::ranges::find_if(blocks, [&](const UniformBlock& b) {
-        return b.set == sampler.set && b.binding == sampler.binding;
-      });
-      if (block != blocks.end())
-        return std::unexpected(backend_error(where(sampler) + " and uniform block '" + block->name +
-                                             "' share one descriptor binding")
-                                   .in_file(module->source_file));
-      auto [it, inserted] = by_binding.try_emplace({sampler.set, sampler.binding}, sampler);
-      if (!inserted && (it->second.name != sampler.name || it->second.kind != sampler.kind ||
-                        it->second.dimensions != sampler.dimensions || it->second.cube != sampler.cube))
-        return std::unexpected(backend_error("the vertex and fragment shaders declare different samplers at set " +
-                                             std::to_string(sampler.set) + ", binding " +
-                                             std::to_string(sampler.binding) + " (" + where(it->second) + " " +
-                                             sampler_type_text(it->second) + " and " + where(sampler) + " " +
-                                             sampler_type_text(sampler) + ")"));
-      if (!inserted)
-        for (const std::string& p : sampler.paired)
-          if (std::ranges::find(it->second.paired, p) == it->second.paired.end()) it->second.paired.push_back(p);
-    }
-  }
-  std::vector<SamplerBinding> samplers;
-  for (auto& [key, sampler] : by_binding) samplers.push_back(std::move(sampler));
-  return samplers;
-}
-
 Result<std::vector<ResolvedTexture>> resolve_textures(const VulkanDevice& device,
                                                       const std::vector<SamplerBinding>& samplers,
                                                       const TextureResolver* resolver) {

@@ -13,6 +13,7 @@
 #include <vulkan/vulkan.h>
 
 #include "backends/Backend.h"
+#include "backends/ProgramBindings.h"
 #include "backends/vulkan/VulkanDevice.h"
 #include "backends/vulkan/VulkanHandles.h"
 #include "backends/vulkan/VulkanMemory.h"
@@ -22,12 +23,6 @@
 namespace shaderbed::vulkan {
 
 VkFormat texture_format(TexelFormat format);
-
-// The union of both stages' samplers, sorted by (set, binding). A sampler both stages
-// declare at one set/binding must agree on name, kind and type; a sampler at the
-// set/binding of a uniform block is an error (one descriptor cannot be both).
-Result<std::vector<SamplerBinding>> program_samplers(const CompiledProgram& program,
-                                                     const std::vector<UniformBlock>& blocks);
 
 struct ResolvedTexture {
   SamplerBinding sampler;

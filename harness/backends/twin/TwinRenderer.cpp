@@ -1,0 +1,184 @@
+#include "backends/twin/TwinRenderer.h"
+
+#include <chrono>
+#include <cstring>
+
+#include "backends/ProgramBindings.h"
+#include "backends/VertexInputs.h"
+#include "twin/TwinDraw.h"
+
+namespace shaderbed {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+Error twin_error(const twin::TwinError& e) {
+  return Error{.message = e.message, .file = e.file, .line = e.line, .stage = ErrorStage::twin};
+}
+
+twin::Filter filter(TextureFilter f) { return f == TextureFilter::nearest ? twin::Filter::nearest : twin::Filter::linear; }
+twin::MipFilter mip(MipFilter f) {
+  return f == MipFilter::none ? twin::MipFilter::none : f == MipFilter::nearest ? twin::MipFilter::nearest : twin::MipFilter::linear;
+}
+twin::Address address(AddressMode a) {
+  switch (a) {
+    case AddressMode::wrap: return twin::Address::wrap;
+    case AddressMode::mirror: return twin::Address::mirror;
+    case AddressMode::clamp: return twin::Address::clamp;
+    case AddressMode::border: return twin::Address::border;
+  }
+  return twin::Address::clamp;
+}
+
+twin::SamplerState sampler_state(const SamplerSettings& s) {
+  twin::SamplerState out{.min_filter = filter(s.min_filter),
+                         .mag_filter = filter(s.mag_filter),
+                         .mip_filter = mip(s.mip_filter),
+                         .address_u = address(s.address_u),
+                         .address_v = address(s.address_v),
+                         .address_w = address(s.address_w)};
+  for (int i = 0; i < 4; ++i) out.border[size_t(i)] = s.border_color[i];
+  out.srgb = s.srgb;
+  return out;
+}
+
+twin::TextureImage texture_image(const Texture& t) {
+  twin::TextureImage image{.dimensions = t.dimensions,
+                           .cube = t.cube,
+                           .width = t.width,
+                           .height = t.height,
+                           .depth = t.depth,
+                           .channels = channels(t.format),
+                           .unorm8 = t.format == TexelFormat::rgba8_unorm || t.format == TexelFormat::rgba8_srgb};
+  image.levels.push_back(t.texels);
+  for (const auto& level : t.mip_levels) image.levels.push_back(level);
+  return image;
+}
+
+}  // namespace
+
+struct TwinRenderer::Programs {
+  std::map<std::string, twin::Program> by_key;
+};
+
+TwinRenderer::TwinRenderer(twin::Precision precision, unsigned threads)
+    : precision_(precision),
+      threads_(threads),
+      name_(std::string("twin-") + twin::to_string(precision)),
+      programs_(std::make_unique<Programs>()) {}
+
+TwinRenderer::~TwinRenderer() = default;
+
+std::string TwinRenderer::driver_version() const { return "shaderbed twin " + std::string(twin::to_string(precision_)); }
+std::string TwinRenderer::device_name() const { return "SPIR-V interpreter on the CPU reference rasteriser"; }
+
+Result<RenderOutput> TwinRenderer::render(const DrawJob& job) {
+  const auto fail = [&](Error e) { return std::unexpected(std::move(e).in_backend(name_)); };
+  if (job.path != ShaderPath::spirv)
+    return fail(Error{.message = "the twin runs SPIR-V only", .stage = ErrorStage::twin});
+  // Culling is modelled; depth, blending and fill other than shaderbed's defaults are not.
+  // LESS_EQUAL differs from the rasteriser's LESS only where one draw's triangles tie in depth.
+  RenderState unmodelled = job.render_state;
+  unmodelled.cull = CullMode::none;
+  if (unmodelled.depth_compare == CompareOp::less_equal) unmodelled.depth_compare = CompareOp::less;
+  if (!(unmodelled == RenderState{}))
+    return fail(Error{.message = "the twin draws with shaderbed's default depth test, blending and fill only, not " +
+                                 describe(job.render_state),
+                      .stage = ErrorStage::twin});
+
+  const auto build_start = Clock::now();
+  const std::string key = program_key(job.program, ShaderPath::spirv);
+  auto cached = programs_->by_key.find(key);
+  RenderOutput output;
+  output.timings.program_cached = cached != programs_->by_key.end();
+  if (!output.timings.program_cached) {
+    auto program = twin::load_program(job.program.vertex.spirv, job.program.vertex.entry_point,
+                                      job.program.fragment.spirv, job.program.fragment.entry_point);
+    if (!program) return fail(twin_error(program.error()));
+    if (programs_->by_key.size() >= 64) programs_->by_key.erase(programs_->by_key.begin());
+    cached = programs_->by_key.emplace(key, std::move(*program)).first;
+    output.timings.build_ms = ms_since(build_start);
+  }
+
+  // Bindings: the same packing and sampler resolution the Vulkan backend does.
+  auto blocks = program_uniform_blocks(job.program);
+  if (!blocks) return fail(blocks.error());
+  auto packed = pack_uniform_blocks(*blocks, job.uniforms);
+  if (!packed) return fail(packed.error());
+  auto samplers = program_samplers(job.program, *blocks);
+  if (!samplers) return fail(samplers.error());
+  twin::BoundResources resources;
+  for (const PackedBlock& p : *packed) resources.buffers[{p.block.set, p.block.binding}] = p.bytes;
+  std::vector<std::unique_ptr<twin::TextureImage>> images;
+  for (const SamplerBinding& s : *samplers) {
+    twin::BoundResources::Resource resource;
+    if (!job.textures)
+      return fail(Error{.message = "the program samples '" + s.name + "' but the draw binds no textures",
+                        .stage = ErrorStage::texture});
+    if (s.kind != SamplerKind::sampler) {
+      auto texture = job.textures->texture(s);
+      if (!texture) return fail(texture.error());
+      images.push_back(std::make_unique<twin::TextureImage>(texture_image(**texture)));
+      resource.image = images.back().get();
+      resource.sampler.srgb = (*texture)->format == TexelFormat::rgba8_srgb;
+    }
+    if (s.kind != SamplerKind::image) {
+      auto settings = job.textures->settings(s);
+      if (!settings) return fail(settings.error());
+      const bool srgb = resource.sampler.srgb;
+      resource.sampler = sampler_state(*settings);
+      resource.sampler.srgb = resource.sampler.srgb || srgb;
+    }
+    resources.handles[{s.set, s.binding}] = uint32_t(resources.resources.size());
+    resources.resources.push_back(resource);
+  }
+
+  // Vertex inputs: each input's stream, widened to 4 components as vertex fetch does.
+  auto streams = attribute_streams_for(job.program.vertex.reflection.inputs, job.attributes, job.program.language,
+                                       &job.mesh.extra);
+  if (!streams) return fail(streams.error());
+  std::vector<twin::VertexStream> inputs;
+  const auto& vertices = job.mesh.vertices;
+  for (size_t i = 0; i < streams->size(); ++i) {
+    const AttributeStream& s = (*streams)[i];
+    twin::VertexStream stream{.location = job.program.vertex.reflection.inputs[i].location};
+    stream.values.resize(vertices.size() * 4);
+    for (size_t v = 0; v < vertices.size(); ++v) {
+      float value[4] = {0, 0, 0, 1};
+      const std::byte* base = s.binding == 0 ? reinterpret_cast<const std::byte*>(&vertices[v])
+                                             : reinterpret_cast<const std::byte*>(job.mesh.extra.values.data() +
+                                                                                  v * job.mesh.extra.stride_floats());
+      std::memcpy(value, base + s.offset, s.components * sizeof(float));
+      for (int k = 0; k < 4; ++k) stream.values[v * 4 + size_t(k)] = value[k];
+    }
+    inputs.push_back(std::move(stream));
+  }
+
+  const twin::DrawInput input{.program = cached->second,
+                              .resources = resources,
+                              .streams = inputs,
+                              .vertex_count = uint32_t(vertices.size()),
+                              .indices = job.mesh.indices,
+                              .width = job.width,
+                              .height = job.height,
+                              .precision = precision_,
+                              // D3D's CullMode names the on-screen winding culled (RenderState.h).
+                              .cull = job.render_state.cull == CullMode::ccw  ? twin::Cull::back
+                                      : job.render_state.cull == CullMode::cw ? twin::Cull::front
+                                                                              : twin::Cull::none,
+                              .threads = threads_};
+  const auto draw_start = Clock::now();
+  auto drawn = twin::draw(input);
+  if (!drawn) return fail(twin_error(drawn.error()));
+  output.timings.draw_ms = ms_since(draw_start);
+  output.image = Image(job.width, job.height);
+  for (size_t i = 0; i < drawn->rgba.size(); ++i) output.image.rgba[i] = float(drawn->rgba[i]);
+  output.image.coverage = drawn->coverage;
+  output.image.exact_rgba = std::move(drawn->rgba);
+  return output;
+}
+
+}  // namespace shaderbed

@@ -1,0 +1,35 @@
+#pragma once
+// The shader's twin as a backend: a draw job's program, bindings, textures and vertex
+// inputs handed to twin/ (the SPIR-V interpreter on the reference rasteriser), so a twin
+// draws exactly what draw_cell binds for the GPUs. Its image keeps the twin's own
+// precision (Image::exact_rgba); its float values are those rounded for storage.
+#include <map>
+#include <memory>
+#include <string>
+
+#include "backends/Backend.h"
+#include "twin/Precision.h"
+
+namespace shaderbed {
+
+class TwinRenderer final : public Backend {
+ public:
+  // threads 0: every core.
+  explicit TwinRenderer(twin::Precision precision, unsigned threads = 0);
+  ~TwinRenderer() override;
+  std::string_view name() const override { return name_; }
+  std::string driver_version() const override;
+  std::string device_name() const override;
+  std::vector<ShaderPath> paths(Language) const override { return {ShaderPath::spirv}; }
+  Result<RenderOutput> render(const DrawJob& job) override;
+  twin::Precision precision() const { return precision_; }
+
+ private:
+  struct Programs;
+  twin::Precision precision_;
+  unsigned threads_;
+  std::string name_;
+  std::unique_ptr<Programs> programs_;
+};
+
+}  // namespace shaderbed

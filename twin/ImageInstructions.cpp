@@ -1,0 +1,169 @@
+// Image instructions: handles, sampling with implicit or explicit LOD, fetches and queries,
+// all answered by TextureSampling from the texels the draw binds. A handle is an index
+// into BoundResources::resources; OpSampledImage pairs an image with a separate sampler
+// state as image + 65536 * (sampler + 1).
+#include <spirv/unified1/spirv.hpp11>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "twin/Executor.h"
+
+namespace twin {
+namespace {
+
+using spv::Op;
+
+constexpr uint32_t sampler_shift = 65536;
+
+}  // namespace
+
+TwinResult<void> Executor::execute_image(uint32_t index, const Lanes& lanes) {
+  const Instruction& in = m_.instructions[index];
+  const auto ops = m_.operands_of(in);
+  const Op op = Op(in.op);
+  const uint32_t L = lanes_;
+  double* d = dst(in.result);
+  const Src handle = src(ops[0]);
+
+  struct Bound {
+    const TextureImage* image = nullptr;
+    SamplerState sampler;
+  };
+  // The sampler state's filtering and addressing; sRGB decoding belongs to the image's format.
+  auto bound = [&](uint16_t l) -> Bound {
+    const auto h = uint32_t(handle.at(0, l));
+    const uint32_t image = h % sampler_shift, sampler = h / sampler_shift;
+    if (image >= resources_.resources.size() || (sampler && sampler - 1 >= resources_.resources.size())) return {};
+    Bound b{.image = resources_.resources[image].image,
+            .sampler = sampler ? resources_.resources[sampler - 1].sampler : resources_.resources[image].sampler};
+    b.sampler.srgb = resources_.resources[image].sampler.srgb;
+    return b;
+  };
+
+  switch (op) {
+    case Op::OpSampledImage: {
+      const Src sampler = src(ops[1]);
+      for (uint16_t l : lanes) d[l] = double(uint32_t(handle.at(0, l)) % sampler_shift) +
+                                      sampler_shift * (double(uint32_t(sampler.at(0, l)) % sampler_shift) + 1);
+      return {};
+    }
+    case Op::OpImage:
+      for (uint16_t l : lanes) d[l] = double(uint32_t(handle.at(0, l)) % sampler_shift);
+      return {};
+    default: break;
+  }
+
+  // The image type: how many coordinates it takes.
+  uint32_t image_type = m_.type_of[ops[0]];
+  if (m_.types[image_type].kind == Type::Kind::sampled_image) image_type = m_.types[image_type].element;
+  const Type& it = m_.types[image_type];
+  if (it.arrayed) return std::unexpected(error(in, "the twin does not sample arrayed images"));
+  const auto dim = spv::Dim(it.dim);
+  const uint32_t coordinates = dim == spv::Dim::Dim1D ? 1 : dim == spv::Dim::Dim2D ? 2 : 3;
+
+  auto missing = [&]() { return std::unexpected(error(in, "a texture instruction reads a binding with no texture")); };
+
+  switch (op) {
+    case Op::OpImageSampleImplicitLod: case Op::OpImageSampleExplicitLod: case Op::OpImageSampleProjImplicitLod:
+    case Op::OpImageSampleProjExplicitLod: case Op::OpImageQueryLod: {
+      const bool projective = op == Op::OpImageSampleProjImplicitLod || op == Op::OpImageSampleProjExplicitLod;
+      const bool implicit = op == Op::OpImageSampleImplicitLod || op == Op::OpImageSampleProjImplicitLod ||
+                            op == Op::OpImageQueryLod;
+      const Src coordinate = src(ops[1]);
+      const uint32_t mask = ops.size() > 2 ? ops[2] : 0;
+      size_t next = 3;
+      std::optional<Src> bias, lod, grad_x, grad_y;
+      if (mask & uint32_t(spv::ImageOperandsMask::Bias)) bias = src(ops[next++]);
+      if (mask & uint32_t(spv::ImageOperandsMask::Lod)) lod = src(ops[next++]);
+      if (mask & uint32_t(spv::ImageOperandsMask::Grad)) {
+        grad_x = src(ops[next++]);
+        grad_y = src(ops[next++]);
+      }
+      if (mask & ~uint32_t(spv::ImageOperandsMask::Bias | spv::ImageOperandsMask::Lod | spv::ImageOperandsMask::Grad))
+        return std::unexpected(error(in, "the twin does not support texel offsets or other image operands"));
+      auto coordinate_at = [&](uint16_t lane) {
+        std::array<double, 3> c{0, 0, 0};
+        const double q = projective ? coordinate.at(coordinates, lane) : 1.0;
+        for (uint32_t k = 0; k < coordinates; ++k) c[k] = projective ? round(index, coordinate.at(k, lane) / q)
+                                                                     : coordinate.at(k, lane);
+        return c;
+      };
+      for (uint16_t l : lanes) {
+        const Bound b = bound(l);
+        if (!b.image) return missing();
+        double lambda = 0;
+        if (grad_x) {
+          CoordinateDerivatives g;
+          for (uint32_t k = 0; k < coordinates; ++k) {
+            g.dx[k] = grad_x->at(k, l);
+            g.dy[k] = grad_y->at(k, l);
+          }
+          lambda = implicit_lod(*b.image, coordinate_at(l), g);
+        } else if (lod) {
+          lambda = lod->at(0, l);
+        } else if (implicit && quads_) {
+          // One level of detail per quad, from its first row and column (llvmpipe's default).
+          const uint16_t q = uint16_t(l & ~3u);
+          const auto c0 = coordinate_at(q), cx = coordinate_at(uint16_t(q + 1)), cy = coordinate_at(uint16_t(q + 2));
+          CoordinateDerivatives g;
+          for (uint32_t k = 0; k < coordinates; ++k) {
+            g.dx[k] = cx[k] - c0[k];
+            g.dy[k] = cy[k] - c0[k];
+          }
+          lambda = implicit_lod(*b.image, c0, g);
+        }
+        if (bias) lambda += bias->at(0, l);
+        if (op == Op::OpImageQueryLod) {
+          const double levels = level_count(*b.image);
+          const double clamped = b.sampler.mip_filter == MipFilter::none ? 0.0 : std::clamp(lambda, 0.0, levels - 1);
+          d[l] = round(index, clamped);
+          d[L + l] = round(index, lambda);
+          continue;
+        }
+        const std::array<double, 4> texel = sample(*b.image, b.sampler, coordinate_at(l), lambda);
+        const uint32_t n = slots_of(in.result);
+        for (uint32_t s = 0; s < n && s < 4; ++s) d[s * L + l] = round(index, texel[s]);
+      }
+      return {};
+    }
+    case Op::OpImageFetch: {
+      const Src coordinate = src(ops[1]);
+      const uint32_t mask = ops.size() > 2 ? ops[2] : 0;
+      std::optional<Src> lod;
+      if (mask & uint32_t(spv::ImageOperandsMask::Lod)) lod = src(ops[3]);
+      for (uint16_t l : lanes) {
+        const Bound b = bound(l);
+        if (!b.image) return missing();
+        std::array<int, 3> texel{0, 0, 0};
+        for (uint32_t k = 0; k < coordinates; ++k) texel[k] = int(std::clamp(coordinate.at(k, l), -1e9, 1e9));
+        const auto value = fetch(*b.image, b.sampler.srgb, texel, lod ? int(lod->at(0, l)) : 0);
+        const uint32_t n = slots_of(in.result);
+        for (uint32_t s = 0; s < n && s < 4; ++s) d[s * L + l] = round(index, value[s]);
+      }
+      return {};
+    }
+    case Op::OpImageQuerySize: case Op::OpImageQuerySizeLod: {
+      const std::optional<Src> lod = op == Op::OpImageQuerySizeLod ? std::optional<Src>(src(ops[1])) : std::nullopt;
+      const uint32_t n = slots_of(in.result);
+      for (uint16_t l : lanes) {
+        const Bound b = bound(l);
+        if (!b.image) return missing();
+        const auto size = level_size(*b.image, lod ? int(lod->at(0, l)) : 0);
+        for (uint32_t s = 0; s < n && s < 3; ++s) d[s * L + l] = size[s];
+      }
+      return {};
+    }
+    case Op::OpImageQueryLevels:
+      for (uint16_t l : lanes) {
+        const Bound b = bound(l);
+        if (!b.image) return missing();
+        d[l] = level_count(*b.image);
+      }
+      return {};
+    default: return std::unexpected(error(in, "the twin does not support " + opcode_name(in.op)));
+  }
+}
+
+}  // namespace twin
