@@ -136,9 +136,10 @@ namespace {
 
 // Decodes a block member of type `t` at byte `offset` into slots (std140/std430 as the
 // module's Offset, ArrayStride and MatrixStride decorations lay it out).
-void decode_memory(const Module& m, uint32_t type_id, std::span<const std::byte> bytes, size_t offset,
+void decode_memory(const Module& m, uint32_t type_id, const BoundResources::Buffer& buffer, size_t offset,
                    uint32_t matrix_stride, bool row_major, std::vector<double>& out) {
   const Type& t = m.types[type_id];
+  const std::span<const std::byte> bytes = buffer.bytes;
   auto read32 = [&](size_t at) -> uint32_t {
     uint32_t v = 0;
     if (at + 4 <= bytes.size()) std::memcpy(&v, bytes.data() + at, 4);
@@ -150,6 +151,8 @@ void decode_memory(const Module& m, uint32_t type_id, std::span<const std::byte>
         uint64_t v = 0;
         if (offset + 8 <= bytes.size()) std::memcpy(&v, bytes.data() + offset, 8);
         out.push_back(std::bit_cast<double>(v));
+      } else if (offset % 4 == 0 && offset / 4 < buffer.words.size()) {
+        out.push_back(buffer.words[offset / 4]);
       } else {
         out.push_back(std::bit_cast<float>(read32(offset)));
       }
@@ -158,7 +161,7 @@ void decode_memory(const Module& m, uint32_t type_id, std::span<const std::byte>
     case K::boolean: out.push_back(read32(offset) != 0); return;
     case K::vector: {
       const uint32_t size = m.types[t.element].width / 8;
-      for (uint32_t i = 0; i < t.count; ++i) decode_memory(m, t.element, bytes, offset + i * size, 0, false, out);
+      for (uint32_t i = 0; i < t.count; ++i) decode_memory(m, t.element, buffer, offset + i * size, 0, false, out);
       return;
     }
     case K::matrix: {
@@ -168,17 +171,17 @@ void decode_memory(const Module& m, uint32_t type_id, std::span<const std::byte>
         for (uint32_t r = 0; r < column.count; ++r) {
           const size_t at = row_major ? offset + r * matrix_stride + c * scalar_size
                                       : offset + c * matrix_stride + r * scalar_size;
-          decode_memory(m, column.element, bytes, at, 0, false, out);
+          decode_memory(m, column.element, buffer, at, 0, false, out);
         }
       return;
     }
     case K::array:
       for (uint32_t i = 0; i < t.count; ++i)
-        decode_memory(m, t.element, bytes, offset + size_t(i) * t.array_stride, matrix_stride, row_major, out);
+        decode_memory(m, t.element, buffer, offset + size_t(i) * t.array_stride, matrix_stride, row_major, out);
       return;
     case K::structure:
       for (size_t i = 0; i < t.members.size(); ++i)
-        decode_memory(m, t.members[i], bytes, offset + t.member_offset[i], t.member_matrix_stride[i],
+        decode_memory(m, t.members[i], buffer, offset + t.member_offset[i], t.member_matrix_stride[i],
                       t.member_row_major[i] != 0, out);
       return;
     default: out.push_back(0); return;
@@ -190,7 +193,8 @@ void decode_memory(const Module& m, uint32_t type_id, std::span<const std::byte>
 TwinResult<void> Executor::begin(uint32_t lanes, bool quads) {
   lanes_ = lanes;
   quads_ = quads;
-  registers_.assign(size_t(register_slots_) * lanes, 0.0);
+  // Registers are written before they are read (SSA), so a new batch need not clear them.
+  if (registers_.size() < size_t(register_slots_) * lanes) registers_.resize(size_t(register_slots_) * lanes);
   predecessor_.assign(lanes, 0);
   discarded_.assign(lanes, 0);
   for (uint32_t var : m_.variables) {
@@ -226,7 +230,9 @@ TwinResult<void> Executor::begin(uint32_t lanes, bool quads) {
       continue;
     }
     mem.lanes = lanes;
-    mem.slots.assign(size_t(t.slots) * lanes, 0.0);
+    // Outputs start at zero, so a component the shader never writes is the same in every batch.
+    if (mem.slots.size() != size_t(t.slots) * lanes || storage == spv::StorageClass::Output)
+      mem.slots.assign(size_t(t.slots) * lanes, 0.0);
     if (uint32_t init = m_.variable_initializer[var]; init && m_.is_constant[init])
       for (uint32_t s = 0; s < t.slots; ++s)
         std::fill_n(mem.slots.begin() + std::ptrdiff_t(s) * lanes, lanes, m_.constants[init][s]);

@@ -28,8 +28,14 @@ struct BoundResources {
   };
   std::vector<Resource> resources;                          // a handle is an index here
   std::map<std::pair<uint32_t, uint32_t>, uint32_t> handles;   // (set, binding) -> resource
-  std::map<std::pair<uint32_t, uint32_t>, std::span<const std::byte>> buffers;   // (set, binding) -> bytes
-  std::span<const std::byte> push_constants;
+  // A block's bytes as the device reads them and, when the binder has them, the values its
+  // 32-bit words hold before rounding (one double per word): float members read these.
+  struct Buffer {
+    std::span<const std::byte> bytes;
+    std::span<const double> words;
+  };
+  std::map<std::pair<uint32_t, uint32_t>, Buffer> buffers;   // (set, binding)
+  Buffer push_constants;
 };
 
 // Sees every value an observed lane computes (the NaN search, the pixel debugger).

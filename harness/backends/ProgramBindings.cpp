@@ -31,7 +31,7 @@ std::string where(const UniformBlock& block) {
 class BlockContextResolver final : public UniformResolver {
  public:
   explicit BlockContextResolver(const UniformResolver& inner) : inner_(inner) {}
-  Result<std::vector<float>> value(const UniformBlock& block, const UniformMember& member) const override {
+  Result<std::vector<double>> value(const UniformBlock& block, const UniformMember& member) const override {
     auto v = inner_.value(block, member);
     if (v) return v;
     Error e = std::move(v.error());

@@ -13,11 +13,15 @@ namespace shaderbed {
 class UniformResolver {
  public:
   virtual ~UniformResolver() = default;
-  // Value for one member as floats: scalars 1, vectors up to 4 (extra components are
-  // ignored), matrices 16 column-major floats of M in "clip = M * v".
-  virtual Result<std::vector<float>> value(const UniformBlock& block, const UniformMember& member) const = 0;
+  // Value for one member, in double until a backend stores it: scalars 1, vectors up to 4
+  // (extra components are ignored), matrices 16 column-major values of M in "clip = M * v".
+  virtual Result<std::vector<double>> value(const UniformBlock& block, const UniformMember& member) const = 0;
 };
 
 Result<std::vector<std::byte>> pack_uniform_block(const UniformBlock& block, const UniformResolver& resolver);
+
+// The same values before they are stored as 32-bit words, one double per word of the block
+// (integers as their value): what a backend that computes in double reads (the twin).
+Result<std::vector<double>> uniform_block_values(const UniformBlock& block, const UniformResolver& resolver);
 
 }  // namespace shaderbed

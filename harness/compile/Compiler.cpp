@@ -35,9 +35,18 @@ Result<ShaderSource> load_shader_source(Stage stage, const std::string& path) {
 
 Result<ShaderModule> compile_stage(Language language, const ShaderSource& source, Target target,
                                    std::vector<SourceFile>* read_files) {
-  auto spirv = glslang_to_spirv(language, source, target, read_files);
+  // The Vulkan modules carry line information for the twin (twin/), which runs them. glslang
+  // 12 sometimes emits invalid debug instructions (spirv-val: "Id is 0"): such a module is
+  // compiled again without them, so the lines are lost but never the shader.
+  const bool debug_info = target == Target::vulkan;
+  auto spirv = glslang_to_spirv(language, source, target, read_files, debug_info);
   if (!spirv) return std::unexpected(spirv.error());
-  if (auto ok = validate_spirv(*spirv, target, source.path); !ok) return std::unexpected(ok.error());
+  if (auto ok = validate_spirv(*spirv, target, source.path); !ok) {
+    if (!debug_info) return std::unexpected(ok.error());
+    spirv = glslang_to_spirv(language, source, target, nullptr, false);
+    if (!spirv) return std::unexpected(spirv.error());
+    if (auto plain = validate_spirv(*spirv, target, source.path); !plain) return std::unexpected(plain.error());
+  }
   auto reflection = reflect_spirv(*spirv, language, source.stage);
   if (!reflection) return std::unexpected(std::move(reflection.error()).in_file(source.path));
   auto driver_spirv = strip_reflection_info(*spirv, target);

@@ -96,7 +96,7 @@ Error glslang_log_error(const std::string& log, const std::string& path, const c
 bool glslang_initialised() { return initialised; }
 
 Result<std::vector<uint32_t>> glslang_to_spirv(Language language, const ShaderSource& source, Target target,
-                                               std::vector<SourceFile>* read_files) {
+                                               std::vector<SourceFile>* read_files, bool debug_info) {
   initialise_glslang_once();
   const EShLanguage stage = to_glslang(source.stage);
   const bool hlsl = language != Language::glsl;
@@ -219,6 +219,7 @@ Result<std::vector<uint32_t>> glslang_to_spirv(Language language, const ShaderSo
   glslang::SpvOptions options;
   options.disableOptimizer = !hlsl;   // HLSL needs glslang's legalisation passes
   options.validate = false;           // we run spirv-val ourselves with the right env
+  options.generateDebugInfo = debug_info;
   glslang::GlslangToSpv(*program.getIntermediate(stage), spirv, &logger, &options);
   const std::string log = logger.getAllMessages();
   if (spirv.empty())

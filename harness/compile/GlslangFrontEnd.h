@@ -21,8 +21,10 @@ Error glslang_log_error(const std::string& log, const std::string& path, const c
 
 // `read_files`, when given, receives every file the front end read besides `source`
 // (#include files; an includer for HLSL/GLSL would report its files here too).
+// `debug_info`: OpLine per instruction and OpName (and, for GLSL, the text in OpSource),
+// which the shader's twin (twin/) reads to name source lines; drivers ignore them.
 Result<std::vector<uint32_t>> glslang_to_spirv(Language language, const ShaderSource& source, Target target,
-                                               std::vector<SourceFile>* read_files = nullptr);
+                                               std::vector<SourceFile>* read_files = nullptr, bool debug_info = false);
 
 // Whether this process has started glslang (glslang::InitializeProcess, called on the
 // first compile). A process served entirely by the compile cache never does.

@@ -101,7 +101,7 @@ Result<RenderOutput> draw_by_rows(const Slice& slice, const NamedValues& values,
   assembled.image = Image(slice.width, slice.height);
   for (int y = 0; y < slice.height; ++y) {
     NamedValues row = values;
-    std::vector<float>& value = row[slice.spec.row_param];
+    std::vector<double>& value = row[slice.spec.row_param];
     value.assign(std::max<size_t>(value.size(), 1), float(slice.row_values[size_t(y)]));
     auto out = draw(row_mesh(slice, y), row);
     if (!out) return std::unexpected(out.error());
@@ -220,7 +220,7 @@ class HardRunner {
       if (*ref && !dir.empty()) (void)write_png((dir / (v->name + ".reference.png")).string(), to_image(**ref));
       NamedValues values = slice ? slice->uniforms : bindable_values(s.mesh->scene, c.params);
       if (slice)
-        for (const auto& [name, value] : c.params) values.try_emplace(name, std::vector<float>(value.begin(), value.end()));
+        for (const auto& [name, value] : c.params) values.try_emplace(name, value);
 
       for (const auto& shader : v->shaders) {
         const Language language = shader.first;

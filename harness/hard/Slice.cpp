@@ -21,11 +21,11 @@ glm::dvec3 perpendicular(const glm::dvec3& axis, const glm::dvec3& hint) {
 }
 
 glm::dvec3 uniform3(const NamedValues& u, const char* name) {
-  const std::vector<float>& v = u.at(name);
+  const std::vector<double>& v = u.at(name);
   return {v[0], v[1], v[2]};
 }
 
-std::vector<float> floats4(const glm::dvec3& v, double w) { return {float(v.x), float(v.y), float(v.z), float(w)}; }
+std::vector<double> floats4(const glm::dvec3& v, double w) { return {v.x, v.y, v.z, w}; }
 
 }  // namespace
 
@@ -120,10 +120,10 @@ Slice make_slice(const SliceSpec& spec, int size) {
   transform[2][2] = 0;
   transform[3][2] = 0.5;
   const double* m = glm::value_ptr(transform);
-  s.uniforms["transform"] = std::vector<float>(m, m + 16);
+  s.uniforms["transform"] = std::vector<double>(m, m + 16);
   const glm::dmat4 identity(1.0);   // a named matrix: value_ptr must not point into a temporary
   const double* world = glm::value_ptr(identity);
-  s.uniforms["world"] = std::vector<float>(world, world + 16);
+  s.uniforms["world"] = std::vector<double>(world, world + 16);
   s.uniforms["eye_position"] = floats4(kEyeDistance * v, 1);
   if (spec.layout == NormalLayout::plane) {
     // The spot (and Warn light) shines along -light_vector = -N: the centre pixel is on its axis.

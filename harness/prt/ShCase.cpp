@@ -134,16 +134,16 @@ void add_channel_streams(ExtraStreams& extra, const std::string& prefix, size_t 
   for (size_t k = 0; k < (count + 3) / 4; ++k) extra.names.push_back(prefix + std::to_string(k));
 }
 
-std::vector<float> padded(std::vector<float> v) {
-  v.resize((v.size() + 3) / 4 * 4, 0.0f);
+std::vector<double> padded(std::vector<double> v) {
+  v.resize((v.size() + 3) / 4 * 4, 0.0);
   return v;
 }
 
 // The light coefficients as the shaders read them: per channel, padded to whole vec4s.
 void add_light_uniforms(NamedValues& values, std::span<const glm::dvec3> light) {
-  std::vector<float> channel[3];
+  std::vector<double> channel[3];
   for (const glm::dvec3& c : light)
-    for (int k = 0; k < 3; ++k) channel[k].push_back(float(c[k]));
+    for (int k = 0; k < 3; ++k) channel[k].push_back(c[k]);
   const char* names[3] = {"sh_light_r", "sh_light_g", "sh_light_b"};
   for (int k = 0; k < 3; ++k) values[names[k]] = padded(channel[k]);
 }
@@ -249,8 +249,8 @@ Result<ShPrepared> prepare_sh(const Case& c, const Mesh& shape, const SceneSetup
     std::vector<glm::dvec3> irradiance(coefficients.size());
     for (int l = 0; l < bands; ++l)
       for (int m = -l; m <= l; ++m) irradiance[sh::index(l, m)] = coefficients[sh::index(l, m)] * a[l] * albedo / M_PI;
-    std::vector<float> packed;
-    for (const glm::dvec3& v : irradiance) packed.insert(packed.end(), {float(v.r), float(v.g), float(v.b), 0.0f});
+    std::vector<double> packed;
+    for (const glm::dvec3& v : irradiance) packed.insert(packed.end(), {v.r, v.g, v.b, 0.0});
     out.uniforms["sh_irradiance"] = packed;
     auto truncated = [irradiance, bands](const glm::dvec3& n) {
       std::vector<double> y(size_t(bands * bands));
@@ -378,12 +378,12 @@ Result<ShPrepared> prepare_sh(const Case& c, const Mesh& shape, const SceneSetup
     if (!compressed) return fail_sh(compressed.error());
     auto constants = sh::cluster_light_constants(*compressed, coefficients);
     if (!constants) return fail_sh(constants.error());
-    std::vector<float> registers_f(constants->begin(), constants->end());
-    registers_f.resize(size_t(kClusterRegisters) * 4, 0.0f);
+    std::vector<double> registers_f(constants->begin(), constants->end());
+    registers_f.resize(size_t(kClusterRegisters) * 4, 0.0);
     out.uniforms["sh_cluster_constants"] = std::move(registers_f);
     // The shader's loop reads six float4 weights (the book's 24); how many registers each
     // colour's block has is the layout it needs to find G and B.
-    out.uniforms["sh_pca_layout"] = {float(registers / 3), 0.0f, 0.0f, 0.0f};
+    out.uniforms["sh_pca_layout"] = {double(registers / 3), 0.0, 0.0, 0.0};
     out.mesh.extra.names.push_back("sh_cluster");
     add_channel_streams(out.mesh.extra, "sh_weights", 24);
     const size_t stride = out.mesh.extra.stride_floats();

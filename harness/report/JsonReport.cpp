@@ -88,6 +88,16 @@ ojson cell_json(const CellResult& r) {
                   {"bound", json_number(r.sh->bound)},
                   {"precompute_ms", json_number(r.sh->precompute_ms)},
                   {"bytes_per_vertex", json_number(r.sh->bytes_per_vertex)}};
+  if (r.twin)
+    cell["twin"] = {{"precision", r.twin->precision},
+                    {"max_abs", json_number(r.twin->max_abs)},
+                    {"rmse", json_number(r.twin->rmse)},
+                    {"worst_pixel", {r.twin->worst_x, r.twin->worst_y}},
+                    {"reference_max_abs", json_number(r.twin->reference_max_abs)},
+                    {"ms", json_number(r.twin->ms)},
+                    {"precision_note", r.twin->precision_note},
+                    {"nonfinite_origin", r.twin->nonfinite_origin},
+                    {"error", r.twin->error}};
   ojson times = ojson::object();
   for (const auto& [stage, ms] : r.time_ms) times[stage] = json_number(ms);
   cell["time_ms"] = std::move(times);
@@ -308,6 +318,24 @@ CellResult read_cell(const json& c, const std::string& p) {
     read(*s, "precompute_ms", sp, e.precompute_ms);
     read(*s, "bytes_per_vertex", sp, e.bytes_per_vertex);
     r.sh = e;
+  }
+  if (const json* t = object_at(c, "twin", p)) {
+    const std::string tp = child(p, "twin");
+    CellResult::TwinFigures f;
+    read(*t, "precision", tp, f.precision);
+    read(*t, "max_abs", tp, f.max_abs);
+    read(*t, "rmse", tp, f.rmse);
+    if (const json* w = t->contains("worst_pixel") ? &(*t)["worst_pixel"] : nullptr; w && w->is_array() && w->size() == 2 &&
+        (*w)[0].is_number_integer() && (*w)[1].is_number_integer()) {
+      f.worst_x = (*w)[0].get<int>();
+      f.worst_y = (*w)[1].get<int>();
+    }
+    read(*t, "reference_max_abs", tp, f.reference_max_abs);
+    read(*t, "ms", tp, f.ms);
+    read(*t, "precision_note", tp, f.precision_note);
+    read(*t, "nonfinite_origin", tp, f.nonfinite_origin);
+    read(*t, "error", tp, f.error);
+    r.twin = f;
   }
   if (const json* t = object_at(c, "time_ms", p))
     for (const auto& [stage, ms] : t->items()) r.time_ms[stage] = to_double(ms, child(child(p, "time_ms"), stage));

@@ -149,6 +149,22 @@ struct CellResult {
     double bytes_per_vertex = 0;   // the per-vertex streams
   };
   std::optional<ShErrors> sh;
+  // --twin: the render against the same shader executed by its twin (twin/) in the run's
+  // precision, i.e. this render's own fp32 + driver error (for --twin half: what a device
+  // honouring RelaxedPrecision would change); with a model or original reference, also the
+  // twin against that reference, i.e. what the shader's formula differs by. Absent
+  // without --twin.
+  struct TwinFigures {
+    std::string precision;            // "double", "float", "half"
+    double max_abs = -1, rmse = -1;   // render vs twin, per channel over the twin's interior
+    int worst_x = -1, worst_y = -1;   // where max_abs is (row 0 at the top)
+    double reference_max_abs = -1;    // twin vs the cell's reference over its interior (-1: none)
+    double ms = 0;                    // the twin's draw, every core
+    std::string precision_note;       // --twin half, beyond the tolerance: which lines are reduced
+    std::string nonfinite_origin;     // a non-finite pixel: the instruction that first made NaN/Inf
+    std::string error;                // why there are no figures ("" = there are)
+  };
+  std::optional<TwinFigures> twin;
   // CPU wall times: compile, build, draw, readback, reference, compare, and io (writing the
   // cell's images, with --out only). "compile" is the
   // cell's program's (shared by every cell of that case/variant/language) and "reference"

@@ -26,9 +26,9 @@ std::string shape_of(const UniformMember& m) {
 
 // Each element's matrix transposed. Source element: a columns x vecsize matrix, column-major
 // (the transpose of what the member holds); result: vecsize x columns, column-major.
-std::vector<float> transposed(const std::vector<float>& v, const UniformMember& m) {
+std::vector<double> transposed(const std::vector<double>& v, const UniformMember& m) {
   const size_t rows = m.vecsize, cols = m.columns, per = rows * cols;
-  std::vector<float> out(v);
+  std::vector<double> out(v);
   for (size_t base = 0; base + per <= v.size(); base += per)
     for (size_t c = 0; c < cols; ++c)
       for (size_t r = 0; r < rows; ++r) out[base + c * rows + r] = v[base + r * cols + c];
@@ -36,8 +36,8 @@ std::vector<float> transposed(const std::vector<float>& v, const UniformMember& 
 }
 
 // The upper-left 3x3 of a column-major 4x4, for a float3x3 bound to a 4x4 quantity.
-std::vector<float> upper_left_3x3(const std::vector<float>& m) {
-  std::vector<float> out;
+std::vector<double> upper_left_3x3(const std::vector<double>& m) {
+  std::vector<double> out;
   for (int c = 0; c < 3; ++c)
     for (int r = 0; r < 3; ++r) out.push_back(m[size_t(c) * 4 + r]);
   return out;
@@ -49,8 +49,8 @@ Error CaseUniforms::error(std::string message, int line) const {
   return Error{.message = std::move(message), .file = case_path_, .line = line, .stage = ErrorStage::bind};
 }
 
-Result<std::vector<float>> CaseUniforms::concatenate(const Binding& binding, const UniformMember& member) const {
-  std::vector<float> out;
+Result<std::vector<double>> CaseUniforms::concatenate(const Binding& binding, const UniformMember& member) const {
+  std::vector<double> out;
   for (const BindingSource& source : binding.sources) {
     if (source.name.empty()) {
       out.insert(out.end(), source.literal.begin(), source.literal.end());
@@ -74,7 +74,7 @@ BindingTable::const_iterator CaseUniforms::find_binding(const UniformBlock& bloc
   return it;
 }
 
-Result<std::vector<float>> CaseUniforms::value(const UniformBlock& block, const UniformMember& member) const {
+Result<std::vector<double>> CaseUniforms::value(const UniformBlock& block, const UniformMember& member) const {
   auto it = find_binding(block, member);
   // Legacy GLSL's matrices (gl_ModelViewMatrix, ...) are the scene's unless the case binds them.
   const std::optional<std::string> legacy = it == bindings_.end() ? legacy_glsl_default_binding(member.name) : std::nullopt;
@@ -86,14 +86,14 @@ Result<std::vector<float>> CaseUniforms::value(const UniformBlock& block, const 
       initial = Binding{.sources = {BindingSource{.name = "", .literal = d->second}}};
   // Declared but never read (SPIR-V reflection): any value draws the same; zeros, and a warning (unread_unbound).
   if (it == bindings_.end() && !legacy && !initial && !member.read)
-    return std::vector<float>(size_t(member.vecsize) * member.columns * std::max<uint32_t>(1, member.array_size), 0.0f);
+    return std::vector<double>(size_t(member.vecsize) * member.columns * std::max<uint32_t>(1, member.array_size), 0.0);
   if (it == bindings_.end() && !legacy && !initial)
     return std::unexpected(error("uniform '" + member.name + "' of block '" + block.name +
                                  "' has no binding in the case (add it under [bindings.<language>])"));
   const Binding& binding = legacy ? legacy_binding : initial ? *initial : it->second;
   auto values = concatenate(binding, member);
   if (!values) return values;
-  std::vector<float> out = std::move(*values);
+  std::vector<double> out = std::move(*values);
 
   const bool matrix = member.columns > 1;
   const size_t elements = member.array_size ? member.array_size : 1;
@@ -196,7 +196,7 @@ std::vector<std::string> CaseUniforms::unread_unbound(const CompiledProgram& pro
 
 NamedValues bindable_values(const SceneSetup& scene, const std::map<std::string, std::vector<double>>& params) {
   NamedValues values = scene_quantities(scene);
-  for (const auto& [name, v] : params) values.try_emplace(name, std::vector<float>(v.begin(), v.end()));
+  for (const auto& [name, v] : params) values.try_emplace(name, std::vector<double>(v.begin(), v.end()));
   return values;
 }
 

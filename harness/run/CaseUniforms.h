@@ -18,7 +18,7 @@ class CaseUniforms final : public UniformResolver {
                const std::map<std::string, std::vector<double>>* defaults = nullptr)
       : bindings_(bindings), values_(std::move(values)), case_path_(std::move(case_path)), defaults_(defaults) {}
 
-  Result<std::vector<float>> value(const UniformBlock& block, const UniformMember& member) const override;
+  Result<std::vector<double>> value(const UniformBlock& block, const UniformMember& member) const override;
 
   // Every uniform of both stages resolved before anything is drawn, so a case that misses
   // several bindings hears of all of them in one error rather than one per run.
@@ -40,7 +40,7 @@ class CaseUniforms final : public UniformResolver {
 
  private:
   // The binding's values, concatenated, before any layout is applied.
-  Result<std::vector<float>> concatenate(const Binding& binding, const UniformMember& member) const;
+  Result<std::vector<double>> concatenate(const Binding& binding, const UniformMember& member) const;
   Error error(std::string message, int line = 0) const;
   // The table entry a member is bound by: its name, else its $Global register "cN".
   BindingTable::const_iterator find_binding(const UniformBlock& block, const UniformMember& member) const;

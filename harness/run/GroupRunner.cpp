@@ -21,6 +21,7 @@
 #include "lut/LookupTexture.h"
 #include "lut/LutTolerance.h"
 #include "run/CellDraw.h"
+#include "run/CellTwins.h"
 #include "run/LutDomain.h"
 #include "run/ProgramArtefacts.h"
 #include "run/ProgramCache.h"
@@ -63,12 +64,13 @@ struct GroupRunner::Impl final : GroupDrawer {
   Impl(const CellSettings& settings, const SceneSetup& scene, const StoredReferences& stored, bool gl_programs,
        StepObserver on_step)
       : settings_(settings), scene_(scene), on_step_(std::move(on_step)), references_(stored),
-        programs_({settings.relaxed_precision, settings.out_dir, gl_programs}) {}
+        programs_({settings.relaxed_precision, settings.out_dir, gl_programs}), twins_(settings.twin) {}
 
   // Runs one case x variant x shape: every language, backend and path.
   std::vector<CellResult> run(const CellGroup& g) {
     const Case& c = *g.c;
     group_ = &g;
+    twins_.begin_group();
     const std::string mesh_key = g.shape + (settings_.mesh_slices > 0 ? "/" + std::to_string(settings_.mesh_slices)
                                             : c.tessellation == Tessellation::high ? "/high" : "/low");
     if (!meshes_.contains(mesh_key))
@@ -149,6 +151,8 @@ struct GroupRunner::Impl final : GroupDrawer {
       } else {
         if (r.reference.is_reference)
           r.message = "the reference: every other cell of this case is judged against this render of the original";
+        if (twins_.enabled())
+          r.twin = twins_.figures(*this, *g.variant, cell, r, *image, group_image && *group_image ? &**group_image : nullptr);
         images.push_back(std::move(*image));
         rendered_cells.push_back(results.size());
       }
@@ -503,6 +507,7 @@ struct GroupRunner::Impl final : GroupDrawer {
   bool notes_textures_ = false;
   std::set<std::string> reduced_precision_;   // cells whose path computes in reduced precision, by id
   std::vector<PixelClass> classes_;                 // its reference, classified once for all its cells
+  CellTwins twins_;                                 // --twin
 };
 
 GroupRunner::GroupRunner(const CellSettings& settings, const SceneSetup& scene, const StoredReferences& stored,

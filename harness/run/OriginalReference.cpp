@@ -2,17 +2,12 @@
 
 #include <fmt/format.h>
 
+#include "compare/ExactDifference.h"
 #include "run/CaseUniforms.h"
 #include "run/ReferenceKinds.h"
 
 namespace shaderbed {
 namespace {
-
-// A twin's render keeps its own precision (Image::exact_rgba).
-ReferenceImage as_reference(const Image& image) {
-  if (!image.exact_rgba.empty()) return {image.width, image.height, image.exact_rgba, image.coverage};
-  return {image.width, image.height, std::vector<double>(image.rgba.begin(), image.rgba.end()), image.coverage};
-}
 
 // A differential case's original shader, drawn by one backend and path (the case's
 // `reference = {...}`): every cell of the group is judged against its render. When the
@@ -54,7 +49,7 @@ class OriginalReference final : public CellReference {
     }
     // The original must itself look like the shape (coverage near the mesh's projected
     // area); a blank or misplaced original judges nothing.
-    ReferenceImage reference = as_reference(*image);
+    ReferenceImage reference = as_reference_image(*image);
     const Comparison itself = compare_images(*image, reference, {}, g.area);
     if (itself.degenerate || itself.blank || itself.interior.pixels == 0) {
       image_ = error("the original (" + label_ + ") is no reference: " + itself.reason);
@@ -112,7 +107,7 @@ class OriginalReference final : public CellReference {
       CellResult scratch = drawer.row(*group.reference_cell, {});
       auto image = drawer.draw(*group.reference_variant, *group.reference_cell, {.warmup = 0, .runs = 1}, scratch, variation);
       if (!image) return std::unexpected(image.error());
-      return as_reference(*image);
+      return as_reference_image(*image);
     };
     SceneSetup negated = g_.scene;
     negated.lights.direction = -negated.lights.direction;

@@ -41,6 +41,9 @@ struct CellSettings {
   // Warn of case bindings no variant reads: only a run of every variant can tell (a
   // --variant filter would compile the others just for it).
   bool unused_binding_warnings = true;
+  // --twin: every drawn cell also drawn by the shader's twin in this precision ("double",
+  // "float", "half"; "" = off), and CellResult::twin filled.
+  std::string twin;
   bool operator==(const CellSettings&) const = default;
 };
 

@@ -33,7 +33,8 @@ void to_json(json& j, const CellSettings& c) {
        {"mesh_slices", c.mesh_slices},
        {"relaxed_precision", c.relaxed_precision},
        {"per_pixel_reference", c.per_pixel_reference},
-       {"unused_binding_warnings", c.unused_binding_warnings}};
+       {"unused_binding_warnings", c.unused_binding_warnings},
+       {"twin", c.twin}};
 }
 void from_json(const json& j, CellSettings& c) {
   j.at("size").get_to(c.size);
@@ -46,6 +47,7 @@ void from_json(const json& j, CellSettings& c) {
   j.at("relaxed_precision").get_to(c.relaxed_precision);
   j.at("per_pixel_reference").get_to(c.per_pixel_reference);
   j.at("unused_binding_warnings").get_to(c.unused_binding_warnings);
+  j.at("twin").get_to(c.twin);
 }
 
 void to_json(json& j, const ProcessSettings& p) {

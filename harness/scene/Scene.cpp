@@ -6,21 +6,21 @@
 namespace shaderbed {
 namespace {
 
-std::vector<float> floats(const glm::dvec4& v) { return {float(v.x), float(v.y), float(v.z), float(v.w)}; }
+std::vector<double> values(const glm::dvec4& v) { return {v.x, v.y, v.z, v.w}; }
 
 template <int C, int R>
-std::vector<float> floats(const glm::mat<C, R, double>& m) {
+std::vector<double> values(const glm::mat<C, R, double>& m) {
   const double* p = glm::value_ptr(m);   // column-major, as the packer expects
-  return std::vector<float>(p, p + C * R);
+  return std::vector<double>(p, p + C * R);
 }
 
 // A matrix under its name and with each suffix.
 void add_matrix(NamedValues& out, const std::string& name, const glm::dmat4& m) {
   const glm::dmat4 inverse = glm::inverse(m);
-  out[name] = floats(m);
-  out[name + "_inverse"] = floats(inverse);
-  out[name + "_transpose"] = floats(glm::transpose(m));
-  out[name + "_inverse_transpose"] = floats(glm::transpose(inverse));
+  out[name] = values(m);
+  out[name + "_inverse"] = values(inverse);
+  out[name + "_transpose"] = values(glm::transpose(m));
+  out[name + "_inverse_transpose"] = values(glm::transpose(inverse));
 }
 
 // A direction through `m` (w = 0), renormalised, as (x, y, z, 0).
@@ -53,19 +53,19 @@ NamedValues scene_quantities(const SceneSetup& s) {
   add_matrix(out, "world_view", world_view);
   add_matrix(out, "view_projection", projection * view);
   add_matrix(out, "transform", projection * world_view);
-  out["normal_matrix"] = floats(glm::transpose(glm::inverse(glm::dmat3(s.world))));
-  out["normal_matrix_view"] = floats(glm::transpose(glm::inverse(glm::dmat3(world_view))));
+  out["normal_matrix"] = values(glm::transpose(glm::inverse(glm::dmat3(s.world))));
+  out["normal_matrix_view"] = values(glm::transpose(glm::inverse(glm::dmat3(world_view))));
 
   // Lights and eye in each space: object (no suffix), world, view.
   const glm::dmat4 identity(1.0);
   const glm::dmat4 inverse_world = glm::inverse(s.world);
   const std::pair<const char*, const glm::dmat4*> spaces[] = {{"", &inverse_world}, {"_world", &identity}, {"_view", &view}};
   for (const auto& [suffix, from_world] : spaces) {
-    out[std::string("light_vector") + suffix] = floats(direction(*from_world, s.lights.direction));
-    out[std::string("light_position") + suffix] = floats(position(*from_world, s.lights.position));
-    out[std::string("eye_position") + suffix] = floats(position(*from_world, s.camera.eye));
+    out[std::string("light_vector") + suffix] = values(direction(*from_world, s.lights.direction));
+    out[std::string("light_position") + suffix] = values(position(*from_world, s.lights.position));
+    out[std::string("eye_position") + suffix] = values(position(*from_world, s.camera.eye));
   }
-  out["ambient_light"] = floats(glm::dvec4(s.lights.ambient, 1.0));
+  out["ambient_light"] = values(glm::dvec4(s.lights.ambient, 1.0));
   return out;
 }
 

@@ -47,7 +47,7 @@ struct SceneSetup {
 //  - "light_vector" (unit, toward the directional light, w = 0), "light_position" and
 //    "eye_position" (w = 1) in object space, and the same with "_world" and "_view";
 //  - "ambient_light" (r, g, b, 1): the scene's ambient colour.
-using NamedValues = std::map<std::string, std::vector<float>>;
+using NamedValues = std::map<std::string, std::vector<double>>;   // in double until a backend packs them
 NamedValues scene_quantities(const SceneSetup& scene);
 
 glm::dmat4 view_matrix(const Camera&);

@@ -45,9 +45,9 @@ UniformMember matrix4(std::string name) {
 
 // A value as GL takes it: 4 floats for vectors (w = 1 when the binding stops short, as
 // glLight's defaults), the scalar first.
-std::array<GLfloat, 4> four(const std::vector<float>& v) {
+std::array<GLfloat, 4> four(const std::vector<double>& v) {
   std::array<GLfloat, 4> out{0, 0, 0, 1};
-  for (size_t i = 0; i < v.size() && i < 4; ++i) out[i] = v[i];
+  for (size_t i = 0; i < v.size() && i < 4; ++i) out[i] = GLfloat(v[i]);
   return out;
 }
 
@@ -111,9 +111,11 @@ Result<void> set_legacy_gl_state(const GlFunctions& gl, const LegacyGlFunctions&
         else if (parameter) legacy.Lightfv(light, parameter->name, x.data());
         if (auto ok = check_gl(gl, "setting " + member.name + " (fixed-function state)"); !ok) return ok;
       }
-  legacy.LoadMatrixf(modelview->data());
+  const std::vector<GLfloat> modelview_f(modelview->begin(), modelview->end());
+  const std::vector<GLfloat> projection_f(projection->begin(), projection->end());
+  legacy.LoadMatrixf(modelview_f.data());
   legacy.MatrixMode(kProjection);
-  legacy.LoadMatrixf(projection->data());
+  legacy.LoadMatrixf(projection_f.data());
   legacy.MatrixMode(kModelview);
   gl.ClampColor(kClampVertexColor, GL_FALSE);
   gl.ClampColor(kClampFragmentColor, GL_FALSE);

@@ -25,7 +25,7 @@ std::string where(const UniformBlock& block) {
 class WithBlockContext final : public UniformResolver {
  public:
   explicit WithBlockContext(const UniformResolver& inner) : inner_(inner) {}
-  Result<std::vector<float>> value(const UniformBlock& block, const UniformMember& member) const override {
+  Result<std::vector<double>> value(const UniformBlock& block, const UniformMember& member) const override {
     auto v = inner_.value(block, member);
     if (v) return v;
     Error e = std::move(v.error());

@@ -64,6 +64,33 @@ struct TwinRenderer::Programs {
   std::map<std::string, twin::Program> by_key;
 };
 
+// Everything a draw's twin::DrawInput points to, owned.
+struct TwinRenderer::LastDraw {
+  twin::Program program;
+  std::vector<PackedBlock> packed;
+  std::vector<std::vector<double>> words;
+  std::vector<std::unique_ptr<twin::TextureImage>> images;
+  twin::BoundResources resources;
+  std::vector<twin::VertexStream> streams;
+  std::vector<uint32_t> indices;
+  uint32_t vertex_count = 0;
+  int width = 0, height = 0;
+  twin::Cull cull = twin::Cull::none;
+
+  twin::DrawInput input(twin::Precision precision, unsigned threads) const {
+    return {.program = program,
+            .resources = resources,
+            .streams = streams,
+            .vertex_count = vertex_count,
+            .indices = indices,
+            .width = width,
+            .height = height,
+            .precision = precision,
+            .cull = cull,
+            .threads = threads};
+  }
+};
+
 TwinRenderer::TwinRenderer(twin::Precision precision, unsigned threads)
     : precision_(precision),
       threads_(threads),
@@ -104,15 +131,24 @@ Result<RenderOutput> TwinRenderer::render(const DrawJob& job) {
   }
 
   // Bindings: the same packing and sampler resolution the Vulkan backend does.
+  auto draw = std::make_unique<LastDraw>();
+  draw->program = cached->second;
   auto blocks = program_uniform_blocks(job.program);
   if (!blocks) return fail(blocks.error());
   auto packed = pack_uniform_blocks(*blocks, job.uniforms);
   if (!packed) return fail(packed.error());
+  draw->packed = std::move(*packed);
   auto samplers = program_samplers(job.program, *blocks);
   if (!samplers) return fail(samplers.error());
-  twin::BoundResources resources;
-  for (const PackedBlock& p : *packed) resources.buffers[{p.block.set, p.block.binding}] = p.bytes;
-  std::vector<std::unique_ptr<twin::TextureImage>> images;
+  // The double twin reads the values before they were rounded into the buffer's floats.
+  for (const PackedBlock& p : draw->packed) {
+    auto values = uniform_block_values(p.block, job.uniforms);
+    if (!values) return fail(values.error());
+    draw->words.push_back(precision_ == twin::Precision::exact ? std::move(*values) : std::vector<double>{});
+  }
+  twin::BoundResources& resources = draw->resources;
+  for (size_t i = 0; i < draw->packed.size(); ++i)
+    resources.buffers[{draw->packed[i].block.set, draw->packed[i].block.binding}] = {draw->packed[i].bytes, draw->words[i]};
   for (const SamplerBinding& s : *samplers) {
     twin::BoundResources::Resource resource;
     if (!job.textures)
@@ -121,8 +157,8 @@ Result<RenderOutput> TwinRenderer::render(const DrawJob& job) {
     if (s.kind != SamplerKind::sampler) {
       auto texture = job.textures->texture(s);
       if (!texture) return fail(texture.error());
-      images.push_back(std::make_unique<twin::TextureImage>(texture_image(**texture)));
-      resource.image = images.back().get();
+      draw->images.push_back(std::make_unique<twin::TextureImage>(texture_image(**texture)));
+      resource.image = draw->images.back().get();
       resource.sampler.srgb = (*texture)->format == TexelFormat::rgba8_srgb;
     }
     if (s.kind != SamplerKind::image) {
@@ -140,7 +176,6 @@ Result<RenderOutput> TwinRenderer::render(const DrawJob& job) {
   auto streams = attribute_streams_for(job.program.vertex.reflection.inputs, job.attributes, job.program.language,
                                        &job.mesh.extra);
   if (!streams) return fail(streams.error());
-  std::vector<twin::VertexStream> inputs;
   const auto& vertices = job.mesh.vertices;
   for (size_t i = 0; i < streams->size(); ++i) {
     const AttributeStream& s = (*streams)[i];
@@ -154,31 +189,49 @@ Result<RenderOutput> TwinRenderer::render(const DrawJob& job) {
       std::memcpy(value, base + s.offset, s.components * sizeof(float));
       for (int k = 0; k < 4; ++k) stream.values[v * 4 + size_t(k)] = value[k];
     }
-    inputs.push_back(std::move(stream));
+    draw->streams.push_back(std::move(stream));
   }
-
-  const twin::DrawInput input{.program = cached->second,
-                              .resources = resources,
-                              .streams = inputs,
-                              .vertex_count = uint32_t(vertices.size()),
-                              .indices = job.mesh.indices,
-                              .width = job.width,
-                              .height = job.height,
-                              .precision = precision_,
-                              // D3D's CullMode names the on-screen winding culled (RenderState.h).
-                              .cull = job.render_state.cull == CullMode::ccw  ? twin::Cull::back
-                                      : job.render_state.cull == CullMode::cw ? twin::Cull::front
-                                                                              : twin::Cull::none,
-                              .threads = threads_};
+  draw->indices = job.mesh.indices;
+  draw->vertex_count = uint32_t(vertices.size());
+  draw->width = job.width;
+  draw->height = job.height;
+  // D3D's CullMode names the on-screen winding culled (RenderState.h).
+  draw->cull = job.render_state.cull == CullMode::ccw  ? twin::Cull::back
+               : job.render_state.cull == CullMode::cw ? twin::Cull::front
+                                                       : twin::Cull::none;
+  last_ = std::move(draw);
+  const twin::DrawInput input = last_->input(precision_, threads_);
   const auto draw_start = Clock::now();
   auto drawn = twin::draw(input);
   if (!drawn) return fail(twin_error(drawn.error()));
   output.timings.draw_ms = ms_since(draw_start);
+  // Timed repeats run on one thread: the twin's cost per core, comparable across machines
+  // (the image above used every core).
+  if (job.timing.runs > 0) {
+    twin::DrawInput one_thread = input;
+    one_thread.threads = 1;
+    output.timings.gpu_clock = "CPU wall clock, one thread";
+    for (int i = 0; i < job.timing.warmup + job.timing.runs; ++i) {
+      const auto start = Clock::now();
+      if (auto again = twin::draw(one_thread); !again) return fail(twin_error(again.error()));
+      if (i >= job.timing.warmup) output.timings.wall_ms.push_back(ms_since(start));
+    }
+    output.timings.gpu_ms = output.timings.wall_ms;
+  }
   output.image = Image(job.width, job.height);
   for (size_t i = 0; i < drawn->rgba.size(); ++i) output.image.rgba[i] = float(drawn->rgba[i]);
   output.image.coverage = drawn->coverage;
   output.image.exact_rgba = std::move(drawn->rgba);
   return output;
 }
+
+Result<std::optional<twin::ValueOrigin>> TwinRenderer::nonfinite_origin(int x, int y) const {
+  if (!last_) return std::unexpected(Error{.message = "the twin has drawn nothing yet", .stage = ErrorStage::twin});
+  auto origin = twin::first_nonfinite(last_->input(precision_, 1), x, y);
+  if (!origin) return std::unexpected(twin_error(origin.error()));
+  return *origin;
+}
+
+const twin::Program* TwinRenderer::last_program() const { return last_ ? &last_->program : nullptr; }
 
 }  // namespace shaderbed

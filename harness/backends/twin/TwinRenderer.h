@@ -2,13 +2,17 @@
 // The shader's twin as a backend: a draw job's program, bindings, textures and vertex
 // inputs handed to twin/ (the SPIR-V interpreter on the reference rasteriser), so a twin
 // draws exactly what draw_cell binds for the GPUs. Its image keeps the twin's own
-// precision (Image::exact_rgba); its float values are those rounded for storage.
+// precision (Image::exact_rgba); its float values are those rounded for storage. The last
+// draw's inputs are kept, so its pixels can be traced back to the shader's lines.
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "backends/Backend.h"
 #include "twin/Precision.h"
+#include "twin/TwinDraw.h"
+#include "twin/ValueOrigin.h"
 
 namespace shaderbed {
 
@@ -24,12 +28,20 @@ class TwinRenderer final : public Backend {
   Result<RenderOutput> render(const DrawJob& job) override;
   twin::Precision precision() const { return precision_; }
 
+  // Of the last image render() drew: the instruction that first computed a NaN or Inf at
+  // pixel (x, y); nothing when every value there is finite.
+  Result<std::optional<twin::ValueOrigin>> nonfinite_origin(int x, int y) const;
+  // The last draw's program (null before a draw).
+  const twin::Program* last_program() const;
+
  private:
   struct Programs;
+  struct LastDraw;
   twin::Precision precision_;
   unsigned threads_;
   std::string name_;
   std::unique_ptr<Programs> programs_;
+  std::unique_ptr<LastDraw> last_;
 };
 
 }  // namespace shaderbed

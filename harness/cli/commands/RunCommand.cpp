@@ -43,6 +43,11 @@ Command add_run_command(CLI::App& app) {
   cmd->add_option("--param", run.select.params,
                   "Override a case parameter: name=value or name=v1,v2,v3 (repeatable), e.g. --param power=20");
   cmd->add_option("--size", run.cell.size, "Image width and height in pixels")->capture_default_str();
+  cmd->add_option("--twin", run.cell.twin,
+                  "Also draw every cell's shader with its twin (the SPIR-V executed on the CPU) in this precision "
+                  "and report the render against it: double (the exact shader: the render's own fp32 and driver "
+                  "error), float (an ideal fp32 device) or half (RelaxedPrecision in 16 bits, as mobile GPUs do)")
+      ->check(CLI::IsMember({"double", "float", "half"}));
   cmd->add_option("--out", run.cell.out_dir,
                   "Folder for renders, references and error images (EXR + PNG); default with --html: its folder");
   cmd->add_option("--save-images", run.cell.save_images_dir,

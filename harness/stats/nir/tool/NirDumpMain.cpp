@@ -20,10 +20,10 @@ namespace {
 
 class PlaceholderUniforms final : public UniformResolver {
  public:
-  Result<std::vector<float>> value(const UniformBlock&, const UniformMember& member) const override {
+  Result<std::vector<double>> value(const UniformBlock&, const UniformMember& member) const override {
     if (member.columns > 1)
-      return std::vector<float>{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};   // identity transform
-    return std::vector<float>(4, 0.5f);
+      return std::vector<double>{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};   // identity transform
+    return std::vector<double>(4, 0.5);
   }
 };
 

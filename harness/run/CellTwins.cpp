@@ -1,0 +1,106 @@
+#include "run/CellTwins.h"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "compare/ExactDifference.h"
+
+namespace shaderbed {
+namespace {
+
+// The first covered pixel of `image` with a NaN or infinite colour channel.
+std::optional<std::pair<int, int>> first_nonfinite_pixel(const Image& image) {
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      if (!image.covered(x, y)) continue;
+      const float* p = image.pixel(x, y);
+      if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) return std::pair{x, y};
+    }
+  return std::nullopt;
+}
+
+std::string lines_text(const std::vector<twin::SourceLine>& lines) {
+  std::string out;
+  std::string file;
+  for (const twin::SourceLine& l : lines) {
+    if (!out.empty()) out += ", ";
+    out += l.file == file ? std::to_string(l.line) : l.file + ":" + std::to_string(l.line);
+    file = l.file;
+  }
+  return out;
+}
+
+}  // namespace
+
+CellTwins::CellTwins(const std::string& precision) : precision_(precision), slot_{"twin-" + precision} {
+  twin::Precision p;
+  if (precision.empty() || !twin::parse_precision(precision, p)) return;
+  auto renderer = std::make_unique<TwinRenderer>(p);
+  renderer_ = renderer.get();
+  slot_.backend = std::unique_ptr<Backend>(std::move(renderer));
+}
+
+const CellTwins::Drawn& CellTwins::twin_of(GroupDrawer& drawer, const Variant& variant, const PlannedCell& cell,
+                                           const CellResult& row) {
+  const auto key = std::pair{&variant, cell.language};
+  auto it = drawn_.find(key);
+  if (it != drawn_.end()) return it->second;
+  CellResult scratch = row;
+  const PlannedCell twin_cell{cell.language, &slot_, ShaderPath::spirv};
+  Drawn d;
+  d.image = drawer.draw(variant, twin_cell, TimingRequest{.warmup = 0, .runs = 0}, scratch);
+  d.ms = scratch.time_ms["draw"];
+  last_drawn_ = key;
+  return drawn_.emplace(key, std::move(d)).first->second;
+}
+
+CellResult::TwinFigures CellTwins::figures(GroupDrawer& drawer, const Variant& variant, const PlannedCell& cell,
+                                           const CellResult& row, const Image& render, const ReferenceImage* reference) {
+  CellResult::TwinFigures f{.precision = precision_};
+  const Drawn& drawn = twin_of(drawer, variant, cell, row);
+  f.ms = drawn.ms;
+  if (!drawn.image) {
+    f.error = drawn.image.error().to_string();
+    return f;
+  }
+  const ReferenceImage twin_image = as_reference_image(*drawn.image);
+  const std::vector<PixelClass> twin_classes = classify_pixels(twin_image);
+  const ExactDifference own = exact_difference(render, twin_image, twin_classes);
+  f.max_abs = own.max_abs;
+  f.rmse = own.rmse;
+  f.worst_x = own.worst_x;
+  f.worst_y = own.worst_y;
+  if (reference && reference->width == twin_image.width && reference->height == twin_image.height)
+    f.reference_max_abs = exact_difference(*drawn.image, *reference, classify_pixels(*reference)).max_abs;
+
+  // The renderer's last draw must be this program's to trace its pixels.
+  const auto key = std::pair{&variant, cell.language};
+  const auto retrace = [&]() -> bool {
+    if (last_drawn_ == key) return true;
+    drawn_.erase(key);
+    return twin_of(drawer, variant, cell, row).image.has_value();
+  };
+  if (auto pixel = first_nonfinite_pixel(render); pixel && retrace()) {
+    auto origin = renderer_->nonfinite_origin(pixel->first, pixel->second);
+    if (!origin) f.nonfinite_origin = "the twin could not trace pixel " + fmt::format("({}, {})", pixel->first, pixel->second) +
+                                      ": " + origin.error().to_string();
+    else if (!*origin) f.nonfinite_origin = fmt::format("({}, {}) is non-finite in the render but every value the {} twin "
+                                                        "computes there is finite",
+                                                        pixel->first, pixel->second, precision_);
+    else f.nonfinite_origin = fmt::format("({}, {}): {}", pixel->first, pixel->second, (*origin)->describe());
+  }
+  if (precision_ == "half" && own.max_abs > row.interior_threshold && retrace()) {
+    const twin::Program* program = renderer_->last_program();
+    std::vector<twin::SourceLine> lines = twin::relaxed_lines(*program->vertex);
+    for (const twin::SourceLine& l : twin::relaxed_lines(*program->fragment)) lines.push_back(l);
+    f.precision_note = fmt::format("a device that computes RelaxedPrecision (mediump, min16float, half) in 16 bits draws "
+                                   "this {:.3g} away from the render at ({}, {}), over the tolerance {:.3g}; {}",
+                                   own.max_abs, own.worst_x, own.worst_y, row.interior_threshold,
+                                   lines.empty() ? "no line of the shader is marked reduced (the module has no OpLine)"
+                                                 : "reduced-precision lines: " + lines_text(lines));
+  }
+  return f;
+}
+
+}  // namespace shaderbed

@@ -1,0 +1,45 @@
+#pragma once
+// --twin: every drawn cell's render against the same shader executed by its twin
+// (backends/twin, twin/) in the run's precision, and, when the cell has a reference image,
+// the twin against it: the cell's error split into the render's own fp32 + driver part and
+// the shader's formula. Its twin is drawn once per group, variant and language (the image
+// does not depend on the GPU backend or path), and traced back to the source when the
+// render has NaN/Inf or when a half twin departs from the render.
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+
+#include "backends/twin/TwinRenderer.h"
+#include "compare/ImageComparison.h"
+#include "report/Results.h"
+#include "run/CellPlan.h"
+#include "run/CellReference.h"
+
+namespace shaderbed {
+
+class CellTwins {
+ public:
+  explicit CellTwins(const std::string& precision);   // "" = off
+  bool enabled() const { return renderer_ != nullptr; }
+  void begin_group() { drawn_.clear(); }
+  // `row`: the cell's result so far (its identity names the twin's draw steps);
+  // `reference`: the image the cell is judged against, null when it has none.
+  CellResult::TwinFigures figures(GroupDrawer& drawer, const Variant& variant, const PlannedCell& cell,
+                                  const CellResult& row, const Image& render, const ReferenceImage* reference);
+
+ private:
+  struct Drawn {
+    Result<Image> image = fail(ErrorStage::twin, "not drawn");
+    double ms = 0;
+  };
+  const Drawn& twin_of(GroupDrawer& drawer, const Variant& variant, const PlannedCell& cell, const CellResult& row);
+
+  std::string precision_;
+  BackendSlot slot_;
+  TwinRenderer* renderer_ = nullptr;
+  std::map<std::pair<const Variant*, Language>, Drawn> drawn_;
+  std::optional<std::pair<const Variant*, Language>> last_drawn_;   // what the renderer's last draw is
+};
+
+}  // namespace shaderbed
