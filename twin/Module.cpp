@@ -178,6 +178,8 @@ class Decoder {
       case spv::Decoration::RowMajor: t.member_row_major[member] = 1; break;
       case spv::Decoration::BuiltIn: t.member_builtin[member] = int(v[0]); break;
       case spv::Decoration::Location: t.member_location[member] = int(v[0]); break;
+      case spv::Decoration::Flat: t.member_flat[member] = 1; break;
+      case spv::Decoration::NoPerspective: t.member_noperspective[member] = 1; break;
       default: break;
     }
   }
@@ -247,6 +249,8 @@ class Decoder {
         t.member_offset.assign(n, 0);
         t.member_matrix_stride.assign(n, 0);
         t.member_row_major.assign(n, 0);
+        t.member_flat.assign(n, 0);
+        t.member_noperspective.assign(n, 0);
         t.member_builtin.assign(n, -1);
         t.member_location.assign(n, -1);
         break;

@@ -19,24 +19,30 @@ using K = Type::Kind;
 constexpr int max_locations = 32;   // GL's minimum maximum of varying vectors
 constexpr uint32_t batch_lanes = 256;
 
+// How a varying is interpolated: the variable's decoration, or a block member's own.
+struct Interpolation {
+  bool flat = false, noperspective = false;
+};
+
 // A scalar or vector part of an interface variable, at its location and component.
 struct Leaf {
   uint32_t slot = 0, count = 0;
   int location = 0, component = 0;
+  Interpolation interpolation;
 };
 
-void leaves(const Module& m, uint32_t type_id, int location, int component, uint32_t slot, std::vector<Leaf>& out,
-            int& next_location) {
+void leaves(const Module& m, uint32_t type_id, int location, int component, Interpolation interpolation, uint32_t slot,
+            std::vector<Leaf>& out, int& next_location) {
   const Type& t = m.types[type_id];
   switch (t.kind) {
     case K::boolean: case K::integer: case K::floating: case K::vector:
-      out.push_back({slot, t.slots, location, component});
+      out.push_back({slot, t.slots, location, component, interpolation});
       next_location = location + 1;
       return;
     case K::matrix: case K::array: {
       const uint32_t stride = m.types[t.element].slots;
       int at = location;
-      for (uint32_t i = 0; i < t.count; ++i) leaves(m, t.element, at, 0, slot + i * stride, out, at);
+      for (uint32_t i = 0; i < t.count; ++i) leaves(m, t.element, at, 0, interpolation, slot + i * stride, out, at);
       next_location = at;
       return;
     }
@@ -44,7 +50,9 @@ void leaves(const Module& m, uint32_t type_id, int location, int component, uint
       int at = location;
       for (size_t i = 0; i < t.members.size(); ++i) {
         if (t.member_location[i] >= 0) at = t.member_location[i];
-        leaves(m, t.members[i], at, 0, slot + t.member_slots[i], out, at);
+        const Interpolation member{.flat = interpolation.flat || t.member_flat[i] != 0,
+                                   .noperspective = interpolation.noperspective || t.member_noperspective[i] != 0};
+        leaves(m, t.members[i], at, 0, member, slot + t.member_slots[i], out, at);
       }
       next_location = at;
       return;
@@ -59,7 +67,6 @@ struct Interface {
   int builtin = -1;
   std::vector<Leaf> parts;            // located parts (empty for a built-in)
   std::vector<std::pair<uint32_t, int>> member_builtins;   // gl_PerVertex: slot, built-in
-  bool flat = false, noperspective = false;
 };
 
 std::vector<Interface> interface_of(const Module& m, spv::StorageClass storage) {
@@ -69,13 +76,14 @@ std::vector<Interface> interface_of(const Module& m, spv::StorageClass storage) 
     if (pointer.kind != K::pointer || spv::StorageClass(pointer.storage) != storage) continue;
     const Decoration& d = m.decorations[var];
     const Type& t = m.types[pointer.element];
-    Interface i{.variable = var, .slots = t.slots, .builtin = d.builtin, .flat = d.flat, .noperspective = d.noperspective};
+    Interface i{.variable = var, .slots = t.slots, .builtin = d.builtin};
     if (t.kind == K::structure)
       for (size_t k = 0; k < t.members.size(); ++k)
         if (t.member_builtin[k] >= 0) i.member_builtins.push_back({t.member_slots[k], t.member_builtin[k]});
     if (d.location >= 0) {
       int next = 0;
-      leaves(m, pointer.element, d.location, d.component, 0, i.parts, next);
+      leaves(m, pointer.element, d.location, d.component, {.flat = d.flat, .noperspective = d.noperspective}, 0, i.parts,
+             next);
     }
     out.push_back(std::move(i));
   }
@@ -299,7 +307,7 @@ class FragmentStage {
       for (uint32_t l = 0; l < n; ++l) {
         const auto c = corners(lanes[l].triangle);
         glm::dvec3 b = lanes[l].weights;
-        if (i.noperspective) {   // screen-space weights: b_i w_i, normalised
+        if (leaf.interpolation.noperspective) {   // screen-space weights: b_i w_i, normalised
           const glm::dvec3 bw = b * glm::dvec3(vertices_.clip[c[0]].w, vertices_.clip[c[1]].w, vertices_.clip[c[2]].w);
           b = bw / (bw.x + bw.y + bw.z);
         }
@@ -307,7 +315,7 @@ class FragmentStage {
           auto value = [&](int corner) {
             return vertices_.varyings[(size_t(c[size_t(corner)]) * max_locations + leaf.location) * 4 + leaf.component + k];
           };
-          const double v = i.flat ? value(0) : b.x * value(0) + b.y * value(1) + b.z * value(2);
+          const double v = leaf.interpolation.flat ? value(0) : b.x * value(0) + b.y * value(1) + b.z * value(2);
           slots[(leaf.slot + k) * n + l] = stage_round(precision, v);
         }
       }
