@@ -351,7 +351,12 @@ class Decoder {
 
 std::string Module::name_of(uint32_t id) const {
   auto it = names.find(id);
-  return it == names.end() ? "%" + std::to_string(id) : it->second;
+  if (it != names.end() && !it->second.empty()) return it->second;
+  // glslang names an anonymous block's variable "": its block type's name says which it is.
+  if (id < type_of.size() && types[type_of[id]].kind == Type::Kind::pointer)
+    if (auto block = names.find(types[type_of[id]].element); block != names.end() && !block->second.empty())
+      return block->second;
+  return "%" + std::to_string(id);
 }
 
 std::string opcode_name(uint32_t op) {
