@@ -289,7 +289,39 @@ std::vector<std::pair<uint32_t, Executor::Lanes>> Executor::branch_targets(const
 }
 
 TwinResult<void> Executor::run_block_body(const Block& block, Lanes& lanes) {
-  for (uint32_t i = block.first; i < block.last && !lanes.empty(); ++i)
+  uint32_t first = block.first;
+  // A block's OpPhis are parallel copies: one may take another phi of the same block from
+  // the back edge (a swap in a loop), so every phi reads its value before any is written.
+  uint32_t phis_end = first;
+  while (phis_end < block.last && Op(m_.instructions[phis_end].op) == Op::OpPhi) ++phis_end;
+  if (phis_end - first > 1 && !lanes.empty()) {
+    std::vector<double> read;
+    for (uint32_t i = first; i < phis_end; ++i) {
+      const Instruction& in = m_.instructions[i];
+      const auto ops = m_.operands_of(in);
+      const Src old = src(in.result);
+      for (uint32_t s = 0; s < slots_of(in.result); ++s)
+        for (uint16_t l : lanes) {
+          double value = old.at(s, l);
+          for (size_t k = 0; k + 1 < ops.size(); k += 2)
+            if (ops[k + 1] == predecessor_[l]) {
+              value = src(ops[k]).at(s, l);
+              break;
+            }
+          read.push_back(value);
+        }
+    }
+    size_t at = 0;
+    for (uint32_t i = first; i < phis_end; ++i) {
+      const uint32_t result = m_.instructions[i].result;
+      double* d = dst(result);
+      for (uint32_t s = 0; s < slots_of(result); ++s)
+        for (uint16_t l : lanes) d[s * lanes_ + l] = read[at++];
+      if (observer_) observe_result(i, lanes);
+    }
+    first = phis_end;
+  }
+  for (uint32_t i = first; i < block.last && !lanes.empty(); ++i)
     if (auto ok = execute(i, lanes); !ok) return ok;
   return {};
 }
