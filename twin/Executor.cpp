@@ -54,6 +54,19 @@ double from_bits(const Type& t, uint64_t bits) {
   return wrap_integer(t, int64_t(bits));
 }
 
+// Whether every slot of type `id` holds a float: relaxed memory rounds only those to half
+// (a mediump int is a 16-bit integer on a GPU, exact in its range, not a binary16 float).
+bool float_valued(const Module& m, uint32_t id) {
+  const Type& t = m.types[id];
+  switch (t.kind) {
+    case K::floating: return true;
+    case K::vector: case K::matrix: case K::array: return float_valued(m, t.element);
+    case K::structure:
+      return std::all_of(t.members.begin(), t.members.end(), [&](uint32_t member) { return float_valued(m, member); });
+    default: return false;
+  }
+}
+
 // Float -> integer conversion: GPUs saturate out-of-range values; NaN gives 0.
 double float_to_integer(const Type& t, double x) {
   if (!(x == x)) return 0;
@@ -578,7 +591,8 @@ TwinResult<void> Executor::execute_op(uint32_t index, Lanes& lanes) {
       const uint32_t var = p.variable;
       const Memory& mem = memory_[var];
       double* d = dst(in.result);
-      const bool relaxed_load = precision_ == Precision::half && m_.decorations[var].relaxed;
+      const bool relaxed_load =
+          precision_ == Precision::half && m_.decorations[var].relaxed && float_valued(m_, in.result_type);
       if (mem.shared) {
         for (uint32_t s = 0; s < n; ++s)
           for (uint16_t l : lanes) {
@@ -603,7 +617,8 @@ TwinResult<void> Executor::execute_op(uint32_t index, Lanes& lanes) {
       if (mem.shared) return std::unexpected(error(in, "a store into read-only memory"));
       const Src v = src(ops[1]);
       const uint32_t count = slots_of(ops[1]);
-      const bool relaxed_store = precision_ == Precision::half && m_.decorations[p.variable].relaxed;
+      const bool relaxed_store =
+          precision_ == Precision::half && m_.decorations[p.variable].relaxed && float_valued(m_, m_.type_of[ops[1]]);
       for (uint32_t s = 0; s < count; ++s)
         for (uint16_t l : lanes) {
           const size_t at = (size_t(p.at(l)) + s) * L + l;
