@@ -130,6 +130,12 @@ TwinResult<VertexResults> run_vertices(const DrawInput& input) {
         if (stream == input.streams.end())
           return std::unexpected(TwinError{.message = "vertex input " + m.name_of(i.variable) + " (location " +
                                                       std::to_string(leaf.location) + ") has no vertex stream"});
+        // Four values per vertex, or the reads below would run past the stream.
+        if (stream->values.size() < size_t(input.vertex_count) * 4)
+          return std::unexpected(TwinError{.message = "the vertex stream of " + m.name_of(i.variable) + " (location " +
+                                                      std::to_string(leaf.location) + ") has " +
+                                                      std::to_string(stream->values.size()) + " values, not 4 for each of " +
+                                                      std::to_string(input.vertex_count) + " vertices"});
         for (uint32_t k = 0; k < leaf.count; ++k)
           for (uint32_t l = 0; l < n; ++l)
             slots[(leaf.slot + k) * n + l] = stream->values[size_t(first + l) * 4 + leaf.component + k];
