@@ -54,6 +54,19 @@ double from_bits(const Type& t, uint64_t bits) {
   return wrap_integer(t, int64_t(bits));
 }
 
+// Whether every slot of type `id` holds a float: relaxed memory rounds only those to half
+// (a mediump int is a 16-bit integer on a GPU, exact in its range, not a binary16 float).
+bool float_valued(const Module& m, uint32_t id) {
+  const Type& t = m.types[id];
+  switch (t.kind) {
+    case K::floating: return true;
+    case K::vector: case K::matrix: case K::array: return float_valued(m, t.element);
+    case K::structure:
+      return std::all_of(t.members.begin(), t.members.end(), [&](uint32_t member) { return float_valued(m, member); });
+    default: return false;
+  }
+}
+
 // Float -> integer conversion: GPUs saturate out-of-range values; NaN gives 0.
 double float_to_integer(const Type& t, double x) {
   if (!(x == x)) return 0;
@@ -295,7 +308,39 @@ std::vector<std::pair<uint32_t, Executor::Lanes>> Executor::branch_targets(const
 }
 
 TwinResult<void> Executor::run_block_body(const Block& block, Lanes& lanes) {
-  for (uint32_t i = block.first; i < block.last && !lanes.empty(); ++i)
+  uint32_t first = block.first;
+  // A block's OpPhis are parallel copies: one may take another phi of the same block from
+  // the back edge (a swap in a loop), so every phi reads its value before any is written.
+  uint32_t phis_end = first;
+  while (phis_end < block.last && Op(m_.instructions[phis_end].op) == Op::OpPhi) ++phis_end;
+  if (phis_end - first > 1 && !lanes.empty()) {
+    std::vector<double> read;
+    for (uint32_t i = first; i < phis_end; ++i) {
+      const Instruction& in = m_.instructions[i];
+      const auto ops = m_.operands_of(in);
+      const Src old = src(in.result);
+      for (uint32_t s = 0; s < slots_of(in.result); ++s)
+        for (uint16_t l : lanes) {
+          double value = old.at(s, l);
+          for (size_t k = 0; k + 1 < ops.size(); k += 2)
+            if (ops[k + 1] == predecessor_[l]) {
+              value = src(ops[k]).at(s, l);
+              break;
+            }
+          read.push_back(value);
+        }
+    }
+    size_t at = 0;
+    for (uint32_t i = first; i < phis_end; ++i) {
+      const uint32_t result = m_.instructions[i].result;
+      double* d = dst(result);
+      for (uint32_t s = 0; s < slots_of(result); ++s)
+        for (uint16_t l : lanes) d[s * lanes_ + l] = read[at++];
+      if (observer_) observe_result(i, lanes);
+    }
+    first = phis_end;
+  }
+  for (uint32_t i = first; i < block.last && !lanes.empty(); ++i)
     if (auto ok = execute(i, lanes); !ok) return ok;
   return {};
 }
@@ -552,7 +597,8 @@ TwinResult<void> Executor::execute_op(uint32_t index, Lanes& lanes) {
       const uint32_t var = p.variable;
       const Memory& mem = memory_[var];
       double* d = dst(in.result);
-      const bool relaxed_load = precision_ == Precision::half && m_.decorations[var].relaxed;
+      const bool relaxed_load =
+          precision_ == Precision::half && m_.decorations[var].relaxed && float_valued(m_, in.result_type);
       if (mem.shared) {
         for (uint32_t s = 0; s < n; ++s)
           for (uint16_t l : lanes) {
@@ -577,7 +623,8 @@ TwinResult<void> Executor::execute_op(uint32_t index, Lanes& lanes) {
       if (mem.shared) return std::unexpected(error(in, "a store into read-only memory"));
       const Src v = src(ops[1]);
       const uint32_t count = slots_of(ops[1]);
-      const bool relaxed_store = precision_ == Precision::half && m_.decorations[p.variable].relaxed;
+      const bool relaxed_store =
+          precision_ == Precision::half && m_.decorations[p.variable].relaxed && float_valued(m_, m_.type_of[ops[1]]);
       for (uint32_t s = 0; s < count; ++s)
         for (uint16_t l : lanes) {
           const size_t at = (size_t(p.at(l)) + s) * L + l;

@@ -178,6 +178,8 @@ class Decoder {
       case spv::Decoration::RowMajor: t.member_row_major[member] = 1; break;
       case spv::Decoration::BuiltIn: t.member_builtin[member] = int(v[0]); break;
       case spv::Decoration::Location: t.member_location[member] = int(v[0]); break;
+      case spv::Decoration::Flat: t.member_flat[member] = 1; break;
+      case spv::Decoration::NoPerspective: t.member_noperspective[member] = 1; break;
       default: break;
     }
   }
@@ -247,6 +249,8 @@ class Decoder {
         t.member_offset.assign(n, 0);
         t.member_matrix_stride.assign(n, 0);
         t.member_row_major.assign(n, 0);
+        t.member_flat.assign(n, 0);
+        t.member_noperspective.assign(n, 0);
         t.member_builtin.assign(n, -1);
         t.member_location.assign(n, -1);
         break;
@@ -347,7 +351,12 @@ class Decoder {
 
 std::string Module::name_of(uint32_t id) const {
   auto it = names.find(id);
-  return it == names.end() ? "%" + std::to_string(id) : it->second;
+  if (it != names.end() && !it->second.empty()) return it->second;
+  // glslang names an anonymous block's variable "": its block type's name says which it is.
+  if (id < type_of.size() && types[type_of[id]].kind == Type::Kind::pointer)
+    if (auto block = names.find(types[type_of[id]].element); block != names.end() && !block->second.empty())
+      return block->second;
+  return "%" + std::to_string(id);
 }
 
 std::string opcode_name(uint32_t op) {

@@ -33,10 +33,11 @@ struct Type {
   std::vector<uint32_t> members;        // struct member types
   std::vector<uint32_t> member_slots;   // where each member starts, in slots
   // Memory layout (uniform and push-constant blocks): ArrayStride; per member Offset,
-  // MatrixStride and RowMajor; built-in decorations of gl_PerVertex's members.
+  // MatrixStride and RowMajor; built-in decorations of gl_PerVertex's members; an
+  // interface block member's own interpolation (glslang puts `flat` there, not on the block).
   uint32_t array_stride = 0;
   std::vector<uint32_t> member_offset, member_matrix_stride;
-  std::vector<uint8_t> member_row_major;
+  std::vector<uint8_t> member_row_major, member_flat, member_noperspective;
   std::vector<int> member_builtin, member_location;
   // Image: Dim, Arrayed, MS, Sampled.
   uint32_t dim = 0;

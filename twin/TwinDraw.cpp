@@ -19,24 +19,30 @@ using K = Type::Kind;
 constexpr int max_locations = 32;   // GL's minimum maximum of varying vectors
 constexpr uint32_t batch_lanes = 256;
 
+// How a varying is interpolated: the variable's decoration, or a block member's own.
+struct Interpolation {
+  bool flat = false, noperspective = false;
+};
+
 // A scalar or vector part of an interface variable, at its location and component.
 struct Leaf {
   uint32_t slot = 0, count = 0;
   int location = 0, component = 0;
+  Interpolation interpolation;
 };
 
-void leaves(const Module& m, uint32_t type_id, int location, int component, uint32_t slot, std::vector<Leaf>& out,
-            int& next_location) {
+void leaves(const Module& m, uint32_t type_id, int location, int component, Interpolation interpolation, uint32_t slot,
+            std::vector<Leaf>& out, int& next_location) {
   const Type& t = m.types[type_id];
   switch (t.kind) {
     case K::boolean: case K::integer: case K::floating: case K::vector:
-      out.push_back({slot, t.slots, location, component});
+      out.push_back({slot, t.slots, location, component, interpolation});
       next_location = location + 1;
       return;
     case K::matrix: case K::array: {
       const uint32_t stride = m.types[t.element].slots;
       int at = location;
-      for (uint32_t i = 0; i < t.count; ++i) leaves(m, t.element, at, 0, slot + i * stride, out, at);
+      for (uint32_t i = 0; i < t.count; ++i) leaves(m, t.element, at, 0, interpolation, slot + i * stride, out, at);
       next_location = at;
       return;
     }
@@ -44,7 +50,9 @@ void leaves(const Module& m, uint32_t type_id, int location, int component, uint
       int at = location;
       for (size_t i = 0; i < t.members.size(); ++i) {
         if (t.member_location[i] >= 0) at = t.member_location[i];
-        leaves(m, t.members[i], at, 0, slot + t.member_slots[i], out, at);
+        const Interpolation member{.flat = interpolation.flat || t.member_flat[i] != 0,
+                                   .noperspective = interpolation.noperspective || t.member_noperspective[i] != 0};
+        leaves(m, t.members[i], at, 0, member, slot + t.member_slots[i], out, at);
       }
       next_location = at;
       return;
@@ -58,8 +66,11 @@ struct Interface {
   uint32_t slots = 0;
   int builtin = -1;
   std::vector<Leaf> parts;            // located parts (empty for a built-in)
-  std::vector<std::pair<uint32_t, int>> member_builtins;   // gl_PerVertex: slot, built-in
-  bool flat = false, noperspective = false;
+  struct MemberBuiltin {
+    uint32_t slot = 0, count = 0;
+    int builtin = -1;
+  };
+  std::vector<MemberBuiltin> member_builtins;   // gl_PerVertex's members
 };
 
 std::vector<Interface> interface_of(const Module& m, spv::StorageClass storage) {
@@ -69,13 +80,15 @@ std::vector<Interface> interface_of(const Module& m, spv::StorageClass storage) 
     if (pointer.kind != K::pointer || spv::StorageClass(pointer.storage) != storage) continue;
     const Decoration& d = m.decorations[var];
     const Type& t = m.types[pointer.element];
-    Interface i{.variable = var, .slots = t.slots, .builtin = d.builtin, .flat = d.flat, .noperspective = d.noperspective};
+    Interface i{.variable = var, .slots = t.slots, .builtin = d.builtin};
     if (t.kind == K::structure)
       for (size_t k = 0; k < t.members.size(); ++k)
-        if (t.member_builtin[k] >= 0) i.member_builtins.push_back({t.member_slots[k], t.member_builtin[k]});
+        if (t.member_builtin[k] >= 0)
+          i.member_builtins.push_back({t.member_slots[k], m.types[t.members[k]].slots, t.member_builtin[k]});
     if (d.location >= 0) {
       int next = 0;
-      leaves(m, pointer.element, d.location, d.component, 0, i.parts, next);
+      leaves(m, pointer.element, d.location, d.component, {.flat = d.flat, .noperspective = d.noperspective}, 0, i.parts,
+             next);
     }
     out.push_back(std::move(i));
   }
@@ -85,6 +98,9 @@ std::vector<Interface> interface_of(const Module& m, spv::StorageClass storage) 
 struct VertexResults {
   std::vector<glm::dvec4> clip;
   std::vector<double> varyings;   // vertex * max_locations * 4 + location * 4 + component
+  // gl_ClipDistance and gl_CullDistance: vertex * planes + plane (no planes when not declared).
+  uint32_t clip_planes = 0, cull_planes = 0;
+  std::vector<double> clip_distances, cull_distances;
 };
 
 double stage_round(Precision p, double x) { return p == Precision::exact ? x : round_to_float(x); }
@@ -114,6 +130,12 @@ TwinResult<VertexResults> run_vertices(const DrawInput& input) {
         if (stream == input.streams.end())
           return std::unexpected(TwinError{.message = "vertex input " + m.name_of(i.variable) + " (location " +
                                                       std::to_string(leaf.location) + ") has no vertex stream"});
+        // Four values per vertex, or the reads below would run past the stream.
+        if (stream->values.size() < size_t(input.vertex_count) * 4)
+          return std::unexpected(TwinError{.message = "the vertex stream of " + m.name_of(i.variable) + " (location " +
+                                                      std::to_string(leaf.location) + ") has " +
+                                                      std::to_string(stream->values.size()) + " values, not 4 for each of " +
+                                                      std::to_string(input.vertex_count) + " vertices"});
         for (uint32_t k = 0; k < leaf.count; ++k)
           for (uint32_t l = 0; l < n; ++l)
             slots[(leaf.slot + k) * n + l] = stream->values[size_t(first + l) * 4 + leaf.component + k];
@@ -128,9 +150,24 @@ TwinResult<VertexResults> run_vertices(const DrawInput& input) {
           results.clip[first + l] = {slots[slot * n + l], slots[(slot + 1) * n + l], slots[(slot + 2) * n + l],
                                      slots[(slot + 3) * n + l]};
       };
+      auto distances_at = [&](int builtin, uint32_t slot, uint32_t count) {
+        const bool clip = builtin == int(spv::BuiltIn::ClipDistance);
+        if (!clip && builtin != int(spv::BuiltIn::CullDistance)) return;
+        uint32_t& planes = clip ? results.clip_planes : results.cull_planes;
+        std::vector<double>& distances = clip ? results.clip_distances : results.cull_distances;
+        if (planes != count) {
+          planes = count;
+          distances.assign(size_t(input.vertex_count) * count, 0.0);
+        }
+        for (uint32_t plane = 0; plane < count; ++plane)
+          for (uint32_t l = 0; l < n; ++l) distances[size_t(first + l) * count + plane] = slots[(slot + plane) * n + l];
+      };
       if (o.builtin == int(spv::BuiltIn::Position)) position_at(0);
-      for (auto [slot, builtin] : o.member_builtins)
-        if (builtin == int(spv::BuiltIn::Position)) position_at(slot);
+      distances_at(o.builtin, 0, o.slots);
+      for (const auto& member : o.member_builtins) {
+        if (member.builtin == int(spv::BuiltIn::Position)) position_at(member.slot);
+        distances_at(member.builtin, member.slot, member.count);
+      }
       for (const Leaf& leaf : o.parts) {
         if (leaf.location < 0 || leaf.location >= max_locations) continue;
         for (uint32_t k = 0; k < leaf.count && leaf.component + k < 4; ++k)
@@ -151,6 +188,23 @@ TwinResult<VertexResults> run_vertices(const DrawInput& input) {
 bool front_facing(const glm::dvec4& a, const glm::dvec4& b, const glm::dvec4& d) {
   const glm::dmat3 rows(glm::dvec3(a.x, b.x, d.x), glm::dvec3(a.y, b.y, d.y), glm::dvec3(a.w, b.w, d.w));
   return glm::determinant(rows) < 0;
+}
+
+// Where a triangle's corners lie against clip or cull distance planes (outside: < 0).
+struct PlaneSides {
+  bool all_outside = false;   // every corner outside one plane
+  bool straddles = false;     // some plane has corners on both sides
+};
+
+PlaneSides plane_sides(const std::vector<double>& distances, uint32_t planes, const std::array<uint32_t, 3>& corners) {
+  PlaneSides sides;
+  for (uint32_t plane = 0; plane < planes; ++plane) {
+    int outside = 0;
+    for (uint32_t corner : corners) outside += distances[size_t(corner) * planes + plane] < 0 ? 1 : 0;
+    sides.all_outside = sides.all_outside || outside == 3;
+    sides.straddles = sides.straddles || (outside > 0 && outside < 3);
+  }
+  return sides;
 }
 
 // One lane of a fragment batch: a pixel of a quad, shaded for one triangle.
@@ -299,7 +353,7 @@ class FragmentStage {
       for (uint32_t l = 0; l < n; ++l) {
         const auto c = corners(lanes[l].triangle);
         glm::dvec3 b = lanes[l].weights;
-        if (i.noperspective) {   // screen-space weights: b_i w_i, normalised
+        if (leaf.interpolation.noperspective) {   // screen-space weights: b_i w_i, normalised
           const glm::dvec3 bw = b * glm::dvec3(vertices_.clip[c[0]].w, vertices_.clip[c[1]].w, vertices_.clip[c[2]].w);
           b = bw / (bw.x + bw.y + bw.z);
         }
@@ -307,7 +361,7 @@ class FragmentStage {
           auto value = [&](int corner) {
             return vertices_.varyings[(size_t(c[size_t(corner)]) * max_locations + leaf.location) * 4 + leaf.component + k];
           };
-          const double v = i.flat ? value(0) : b.x * value(0) + b.y * value(1) + b.z * value(2);
+          const double v = leaf.interpolation.flat ? value(0) : b.x * value(0) + b.y * value(1) + b.z * value(2);
           slots[(leaf.slot + k) * n + l] = stage_round(precision, v);
         }
       }
@@ -346,6 +400,16 @@ TwinResult<Prepared> prepare(const DrawInput& input) {
     const auto& clip = vertices->clip;
     const bool front = front_facing(clip[input.indices[first]], clip[input.indices[first + 1]], clip[input.indices[first + 2]]);
     if ((input.cull == Cull::back && !front) || (input.cull == Cull::front && front)) continue;
+    // Clip and cull distances as the GPU applies them to whole triangles: one plane with
+    // every corner outside drops the triangle. Cutting a triangle by a clip plane is beyond
+    // the reference rasteriser: an error, rather than an image drawn as if unclipped.
+    const std::array<uint32_t, 3> corners{input.indices[first], input.indices[first + 1], input.indices[first + 2]};
+    if (plane_sides(vertices->cull_distances, vertices->cull_planes, corners).all_outside) continue;
+    const PlaneSides clipped = plane_sides(vertices->clip_distances, vertices->clip_planes, corners);
+    if (clipped.all_outside) continue;
+    if (clipped.straddles)
+      return std::unexpected(TwinError{.message = "the twin does not cut triangles by gl_ClipDistance: triangle " +
+                                                  std::to_string(first / 3) + " has corners on both sides of a clip plane"});
     indices.insert(indices.end(), input.indices.begin() + std::ptrdiff_t(first), input.indices.begin() + std::ptrdiff_t(first + 3));
   }
   auto visibility = reference::rasterise(vertices->clip, indices, input.width, input.height);
