@@ -11,6 +11,7 @@
 #include "report/CellGroups.h"
 #include "report/ConsoleWrap.h"
 #include "report/FirstLine.h"
+#include "report/TwinText.h"
 
 namespace shaderbed {
 namespace {
@@ -82,6 +83,7 @@ EntryText failure_text(const CellResult& r) {
     t.details.push_back("no convention offered: " + withheld);
   if (const std::string against = judged_against(r); !against.empty()) t.details.push_back("judged against: " + against);
   if (!r.reference_note.empty()) t.details.push_back("reference: " + r.reference_note);
+  for (std::string& line : twin_lines(r)) t.details.push_back(std::move(line));
   return t;
 }
 

@@ -30,6 +30,10 @@ void print_table(const RunReport& report, std::FILE* out, const TableOptions& op
   using markup::sci;
   std::vector<std::string> headers = {"case", "variant", "lang",     "backend", "path",
                                       "shape", "max err", "min pass", "rmse",    "verdict"};
+  // --twin: the render against its shader's twin, and the twin against the reference.
+  const bool twins = std::ranges::any_of(report.results, [](const CellResult& r) { return r.twin.has_value(); });
+  if (twins)
+    for (const char* h : {"vs twin", "twin vs ref"}) headers.push_back(h);
   if (options.timing)
     for (const char* h : {"draw ms (wall, median [CI])", "driver clock ms", "build ms"}) headers.push_back(h);
   std::vector<std::vector<std::string>> rows;
@@ -38,6 +42,11 @@ void print_table(const RunReport& report, std::FILE* out, const TableOptions& op
     rows.push_back({r.case_name, r.variant, r.language, r.backend, r.path, r.shape,
                     measured ? sci(r.metrics.max_abs) : "-", measured ? sci(r.metrics.min_passing_interior) : "-",
                     measured ? sci(r.metrics.rmse) : "-", verdict(r)});
+    if (twins) {
+      const bool figures = r.twin && r.twin->error.empty();
+      rows.back().push_back(figures ? sci(r.twin->max_abs) : "-");
+      rows.back().push_back(figures && r.twin->reference_max_abs >= 0 ? sci(r.twin->reference_max_abs) : "-");
+    }
     if (!options.timing) continue;
     const auto build = r.time_ms.find("build");
     rows.back().push_back(interval(r.gpu.wall, r.gpu.runs));

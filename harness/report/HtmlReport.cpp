@@ -1,3 +1,4 @@
+#include "report/TwinText.h"
 #include "report/HtmlReport.h"
 
 #include <algorithm>
@@ -330,6 +331,10 @@ class Writer {
                             escape(r.sh->summary), sci(r.sh->render_vs_exact), sci(r.sh->truncation),
                             r.sh->bound >= 0 ? ", bound " + sci(r.sh->bound) : std::string(), r.sh->precompute_ms,
                             r.sh->bytes_per_vertex));
+    for (const std::string& line : twin_lines(r)) {
+      const size_t colon = line.find(": ");
+      row(escape(line.substr(0, colon)), escape(line.substr(colon + 2)));
+    }
     if (!r.time_ms.empty()) {
       std::vector<std::string> t;
       for (const auto& [stage, ms] : r.time_ms)

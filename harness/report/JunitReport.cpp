@@ -1,3 +1,4 @@
+#include "report/TwinText.h"
 #include "report/JunitReport.h"
 
 #include <cmath>
@@ -66,6 +67,7 @@ std::string details(const CellResult& r) {
 std::string system_out(const CellResult& r) {
   std::string out;
   for (const std::string& w : r.warnings) out += "warning: " + w + "\n";
+  for (const std::string& line : twin_lines(r)) out += line + "\n";
   for (const auto& [stage, ms] : r.time_ms)
     out += fmt::format("{} {:.3f} ms{}\n", stage, ms, shared_stage(stage) ? " (shared)" : "");
   const CellArtefacts& a = r.artefacts;

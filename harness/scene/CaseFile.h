@@ -107,7 +107,9 @@ struct TextureTable {
 // images a known-good run stored (`reference = { images = "DIR" }`, run --save-images).
 struct RenderReference {
   Language language = Language::hlsl;
-  std::string backend = "vulkan";   // "vulkan" | "gl" | "twin-double" | "twin-float" | "twin-half" (twin = ...)
+  // "vulkan" | "gl" | "twin-double" | "twin-float" | "twin-half" (twin = ...; the default
+  // when the case names no backend or path)
+  std::string backend = "vulkan";
   std::string path = "spirv";       // "spirv" | "glsl" | "cross" (backends/Backend.h to_string(ShaderPath))
   std::string variant;              // whose shaders are the original; "" = each variant its own
   int line = 0;

@@ -52,6 +52,13 @@ Result<void> reference_source(const std::string& path, const std::filesystem::pa
       return std::unexpected(at(path, *p, "path = \"glsl\" is the native GL path of GLSL shaders; " +
                                               std::string(to_string(r.language)) + " runs on \"spirv\" or \"cross\""));
   }
+  // Named by neither backend nor path: the original's twin in double, which has no driver
+  // error in it and gave the same verdict as the Vulkan render on every cell of the
+  // differential corpus (docs/differential.md).
+  if (!t->get("backend") && !t->get("path") && !t->get("twin")) {
+    r.backend = "twin-double";
+    r.path = "spirv";
+  }
   if (const toml::node* twin = t->get("twin")) {
     // The original's twin draws on its own backend, from the Vulkan SPIR-V.
     const std::string precision = twin->value_or(std::string());

@@ -95,5 +95,24 @@ TEST(DifferentialCase, AModelCaseWithoutTolerancesLeavesThemToItsModel) {
   EXPECT_TRUE(c->tolerance_from_model);
 }
 
+TEST(DifferentialCase, AnOriginalNamedByLanguageAloneIsJudgedByItsDoubleTwin) {
+  auto c = load_differential("language = \"hlsl\", backend = \"vulkan\"", "language = \"hlsl\"");
+  ASSERT_TRUE(c) << message(c);
+  EXPECT_EQ(c->reference_render->backend, "twin-double");
+  EXPECT_EQ(c->reference_render->path, "spirv");
+}
+
+TEST(DifferentialCase, TwinNamesThePrecisionAndTakesNoBackend) {
+  auto twin_float = load_differential("backend = \"vulkan\"", "twin = \"float\"");
+  ASSERT_TRUE(twin_float) << message(twin_float);
+  EXPECT_EQ(twin_float->reference_render->backend, "twin-float");
+  auto both = load_differential("backend = \"vulkan\"", "backend = \"vulkan\", twin = \"double\"");
+  ASSERT_FALSE(both);
+  EXPECT_NE(both.error().message.find("takes no backend"), std::string::npos) << both.error().message;
+  auto unknown = load_differential("backend = \"vulkan\"", "twin = \"quad\"");
+  ASSERT_FALSE(unknown);
+  EXPECT_NE(unknown.error().message.find("\"double\", \"float\" or \"half\""), std::string::npos) << unknown.error().message;
+}
+
 }  // namespace
 }  // namespace shaderbed

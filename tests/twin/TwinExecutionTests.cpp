@@ -491,7 +491,7 @@ layout(std140, set = 0, binding = 0) uniform Transforms {
     for (size_t c = 0; c < 2; ++c)
       for (size_t r = 0; r < 2; ++r) block.put_float(384 + k * 32 + c * 16 + r * 4, float(P[k][r][c]));
   twin::BoundResources resources;
-  resources.buffers[{0, 0}] = block.bytes();
+  resources.buffers[{0, 0}] = {block.bytes(), {}};
 
   const std::string v = "vec4 v = vec4(gl_FragCoord.x, gl_FragCoord.y, 1.0, 2.0);\n";
   const auto vec = [](double x, double y) { return std::vector<double>{x, y, 1, 2}; };
@@ -1150,7 +1150,7 @@ colour = vec4(relaxed_sum, full_sum, relaxed_scaled, float(exact_count));
   block.put_float(0, 1.0f);
   block.put_float(4, 1.0f / 4096);
   twin::BoundResources resources;
-  resources.buffers[{0, 0}] = block.bytes();
+  resources.buffers[{0, 0}] = {block.bytes(), {}};
   constexpr int width = 8, height = 4;
   constexpr double sum = 1.000244140625;
   for (const twin::Precision precision : {twin::Precision::exact, twin::Precision::single, twin::Precision::half}) {
@@ -1231,14 +1231,15 @@ void main() {
   ASSERT_TRUE(fragment_spirv) << fragment_spirv.error();
   const std::vector<uint32_t> with_line = with_line_before(*fragment_spirv, spv::Op::OpReadClockKHR, "clock.frag", 5);
   for (const bool lines : {false, true}) {
-    SCOPED_TRACE(lines ? "with OpLine" : "without OpLine");
+    // The compile stage's own OpLine names test.frag; the inserted one names clock.frag.
+    SCOPED_TRACE(lines ? "with an inserted OpLine" : "with the compile stage's OpLine");
     auto program = twin::load_program(*vertex_spirv, "main", lines ? with_line : *fragment_spirv, "main");
     ASSERT_TRUE(program) << program.error().to_string();
     auto image = draw_quad(*program, {}, 4, 4);
     ASSERT_FALSE(image);
     EXPECT_NE(image.error().message.find("OpReadClockKHR"), std::string::npos) << image.error().to_string();
-    EXPECT_EQ(image.error().file, lines ? "clock.frag" : "");
-    EXPECT_EQ(image.error().line, lines ? 5 : 0);
+    EXPECT_EQ(image.error().file, lines ? "clock.frag" : "test.frag");
+    EXPECT_EQ(image.error().line, 5);
   }
 }
 
