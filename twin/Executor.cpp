@@ -243,9 +243,10 @@ TwinResult<void> Executor::begin(uint32_t lanes, bool quads) {
       continue;
     }
     mem.lanes = lanes;
-    // Outputs start at zero, so a component the shader never writes is the same in every batch.
-    if (mem.slots.size() != size_t(t.slots) * lanes || storage == spv::StorageClass::Output)
-      mem.slots.assign(size_t(t.slots) * lanes, 0.0);
+    // Outputs start at zero, so a component the shader never writes is the same in every
+    // batch; inputs are filled by the caller and private variables written before read.
+    if (mem.slots.size() < size_t(t.slots) * lanes) mem.slots.resize(size_t(t.slots) * lanes);
+    if (storage == spv::StorageClass::Output) std::fill_n(mem.slots.begin(), size_t(t.slots) * lanes, 0.0);
     if (uint32_t init = m_.variable_initializer[var]; init && m_.is_constant[init])
       for (uint32_t s = 0; s < t.slots; ++s)
         std::fill_n(mem.slots.begin() + std::ptrdiff_t(s) * lanes, lanes, m_.constants[init][s]);
@@ -547,10 +548,9 @@ TwinResult<void> Executor::execute_op(uint32_t index, Lanes& lanes) {
       p = Pointer{.variable = in.result};
       Memory& mem = memory_[in.result];
       const Type& t = m_.types[rt.element];
-      if (mem.slots.size() != size_t(t.slots) * L) {
-        mem.slots.assign(size_t(t.slots) * L, 0.0);
-        mem.lanes = L;
-      }
+      // A function's variable is written before it is read: a new batch need not clear it.
+      if (mem.slots.size() < size_t(t.slots) * L) mem.slots.resize(size_t(t.slots) * L);
+      mem.lanes = L;
       if (ops.size() > 1) {   // an initializer
         const Src init = src(ops[1]);
         for (uint32_t s = 0; s < t.slots; ++s)

@@ -41,7 +41,8 @@ nlohmann::json comparison(const ReferenceVsDrivers& c) {
                      {"wall_ms", interval_json(d.wall)},
                      {"reference_ratio", d.reference_ratio}});
   return {{"case", c.cell.case_name}, {"variant", c.cell.variant}, {"shape", c.cell.shape}, {"size", c.size},
-          {"runs", c.runs},           {"reference_ms", interval_json(c.reference)},  {"draws", draws}};
+          {"runs", c.runs},           {"reference_ms", interval_json(c.reference)},  {"draws", draws},
+          {"twin_of_lavapipe", c.twin_of_lavapipe}};
 }
 
 nlohmann::json process(const ProcessTiming& t) {
@@ -62,10 +63,12 @@ nlohmann::json processes(const ProcessCosts& p) {
   for (const ProcessTiming& t : p.startup) startup[t.label] = process(t);
   const auto ratio = [](double a, double b) { return b > 0 ? a / b : 0.0; };
   const double jit_floor = p.cold.cost.workers > 0 ? p.cold.cost.driver_build_ms() / p.cold.cost.workers : 0;
-  return {{"suite", {{"cold", suite_process_json(p.cold)}, {"warm", suite_process_json(p.warm)}, {"off", suite_process_json(p.off)}}},
+  return {{"suite", {{"cold", suite_process_json(p.cold)}, {"warm", suite_process_json(p.warm)}, {"off", suite_process_json(p.off)},
+                     {"twin", suite_process_json(p.twin)}}},
           {"ratios",
            {{"warm_of_cold", ratio(p.warm.wall_ms, p.cold.wall_ms)},
             {"off_of_cold", ratio(p.off.wall_ms, p.cold.wall_ms)},
+            {"twin_of_warm", ratio(p.twin.wall_ms, p.warm.wall_ms)},
             {"cold_of_jit_floor", ratio(p.cold.wall_ms, jit_floor)}}},
           {"cell", {{"cold", process(p.cell_cold)}, {"warm", process(p.cell_warm)}}},
           {"startup", startup}};

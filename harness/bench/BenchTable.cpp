@@ -46,6 +46,8 @@ std::string suite_section(const BenchReport& r) {
   return out;
 }
 
+std::string verdict(bool met) { return met ? "met" : "MISSED"; }
+
 std::string comparison_section(const BenchReport& r) {
   if (r.comparisons.empty()) return "";
   std::string out = fmt::format(
@@ -56,16 +58,17 @@ std::string comparison_section(const BenchReport& r) {
       r.size, r.size, r.comparisons.front().runs);
   for (const ReferenceVsDrivers& c : r.comparisons) {
     out += fmt::format("  {} ({} shaders)\n", c.cell.label(), c.draws.empty() ? "no" : c.draws.front().language);
-    out += fmt::format("    {:<24} {}\n", "reference (CPU, double)", interval_text(c.reference));
+    out += fmt::format("    {:<34} {}\n", "reference (CPU, double)", interval_text(c.reference));
     for (const DriverDraw& d : c.draws)
-      out += fmt::format("    {:<24} {}   reference / {} = {:.1f}×\n",
+      out += fmt::format("    {:<34} {}   reference / {} = {:.1f}×\n",
                          fmt::format("{}/{} ({})", d.backend, d.path, d.driver), interval_text(d.wall), d.driver,
                          d.reference_ratio);
+    if (c.twin_of_lavapipe > 0)
+      out += fmt::format("    the shader's double twin on one thread = {:.1f}× lavapipe's draw (goal <= {:.0f}×): {}\n",
+                         c.twin_of_lavapipe, twin_draw_goal, verdict(c.twin_of_lavapipe <= twin_draw_goal));
   }
   return out;
 }
-
-std::string verdict(bool met) { return met ? "met" : "MISSED"; }
 
 std::string process_section(const BenchReport& r) {
   const ProcessCosts& p = r.processes;
@@ -89,6 +92,11 @@ std::string process_section(const BenchReport& r) {
   if (default_suite)
     warm_note += fmt::format("; goal <= {:.1f} s: {}", G::warm_suite_ms / 1000, verdict(p.warm.wall_ms <= G::warm_suite_ms));
   suite(p.warm, warm_note);
+  const double twin_of_warm = p.warm.wall_ms > 0 ? p.twin.wall_ms / p.warm.wall_ms : 0;
+  out += fmt::format("  {:<22} {:9.2f} s   CPU {:7.2f} s   {:.2f}x warm (every cell also drawn by its double twin; "
+                     "goal <= {}x): {}\n",
+                     "suite, warm, --twin", p.twin.wall_ms / 1000, p.twin.cpu_ms / 1000, twin_of_warm,
+                     G::twin_suite_of_warm, verdict(twin_of_warm <= G::twin_suite_of_warm));
   suite(p.off, fmt::format("{:.2f}x cold", p.cold.wall_ms > 0 ? p.off.wall_ms / p.cold.wall_ms : 0));
   const auto timed = [&](const ProcessTiming& t, const std::string& note) {
     out += fmt::format("  {:<22} {:9.1f} ms [{:.1f}, {:.1f}]  CPU {:6.1f} ms  {}\n", t.label, t.wall.median, t.wall.low,

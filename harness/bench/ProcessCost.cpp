@@ -64,6 +64,8 @@ Result<SuiteProcess> suite_process(const std::string& state, std::vector<std::st
   for (const char* a : {"--repeat", "0", "--quiet", "--json"}) args.push_back(a);
   args.push_back(json.string());
   if (state == "off") args.insert(args.begin(), {"--no-driver-cache", "--no-compile-cache"});
+  if (state == "twin")
+    for (const char* a : {"--twin", "double"}) args.push_back(a);
   auto timed = run_timed(args, cache_dir, scratch);
   if (!timed) return std::unexpected(timed.error());
   auto report = read_json(json.string());
@@ -106,7 +108,8 @@ Result<ProcessCosts> measure_processes(const ProcessOptions& o) {
   ProcessCosts costs;
 
   // Cold fills the folder warm reads; off turns both caches off.
-  for (auto [state, out] : {std::pair{"cold", &costs.cold}, {"warm", &costs.warm}, {"off", &costs.off}}) {
+  // The twin's run reads the warm caches, so it differs from the warm run by the twins alone.
+  for (auto [state, out] : {std::pair{"cold", &costs.cold}, {"warm", &costs.warm}, {"twin", &costs.twin}, {"off", &costs.off}}) {
     step(fmt::format("suite as a process, caches {}", state));
     auto suite = suite_process(state, o.suite_args, dir / (std::string(state) == "off" ? "cache-off" : "cache-suite"), dir);
     if (!suite) return std::unexpected(suite.error());

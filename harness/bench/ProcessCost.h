@@ -22,6 +22,7 @@ struct ProcessGoals {
   static constexpr double warm_cell_ms = 60;
   static constexpr double cold_cell_ms = 154;          // below VkRunner's cold process on this machine kind
   static constexpr double help_ms = 30;
+  static constexpr double twin_suite_of_warm = 2;      // warm suite with --twin double / without
 };
 
 // One command started `runs` times.
@@ -35,7 +36,7 @@ struct ProcessTiming {
 
 // The suite as one process (draws untimed), its parts from the JSON it wrote.
 struct SuiteProcess {
-  std::string state;              // "cold", "warm", "off"
+  std::string state;              // "cold", "warm", "off", "twin" (warm, --twin double)
   double wall_ms = 0;             // the process, start-up included
   double cpu_ms = 0;
   SuiteCost cost;                 // from its results file
@@ -45,6 +46,7 @@ struct SuiteProcess {
 
 struct ProcessCosts {
   SuiteProcess cold, warm, off;
+  SuiteProcess twin;                           // warm caches, every cell also drawn by its double twin
   ProcessTiming cell_cold, cell_warm;          // one cell per process
   std::vector<ProcessTiming> startup;          // --help, eval, merge
 };

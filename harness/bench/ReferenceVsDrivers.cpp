@@ -90,6 +90,8 @@ Result<ReferenceVsDrivers> time_reference_against_drivers(const ComparedCell& ce
   run.select.variants = {cell.variant};
   run.select.shapes = {cell.shape};
   run.select.languages = {o.language};
+  // The shader's double twin beside the drivers: its timed repeats run on one thread.
+  run.select.backends = {"vulkan", "gl", "twin-double"};
   run.cell.size = o.size;
   run.workers.jobs = 1;
   run.cell.timing = {.warmup = 1, .runs = o.runs};
@@ -103,12 +105,18 @@ Result<ReferenceVsDrivers> time_reference_against_drivers(const ComparedCell& ce
   for (const CellResult& r : report->results) {
     if (r.status == CellStatus::error)
       return fail(ErrorStage::bench, fmt::format("{} could not be drawn: {}", r.id(), r.message));
-    DriverDraw d{r.backend, r.path, r.language, r.backend == "vulkan" ? "lavapipe" : "llvmpipe", r.gpu.wall, 0};
+    const char* driver = r.backend == "vulkan" ? "lavapipe" : r.backend == "gl" ? "llvmpipe" : "twin, 1 thread";
+    DriverDraw d{r.backend, r.path, r.language, driver, r.gpu.wall, 0};
     if (d.wall.median > 0) d.reference_ratio = reference->median / d.wall.median;
     out.draws.push_back(std::move(d));
   }
-  // lavapipe first, then llvmpipe's paths in the runner's order.
+  // lavapipe first, then llvmpipe's paths in the runner's order, the twin last.
+  std::ranges::stable_partition(out.draws, [](const DriverDraw& d) { return d.backend != "twin-double"; });
   std::ranges::stable_partition(out.draws, [](const DriverDraw& d) { return d.backend == "vulkan"; });
+  const auto lavapipe = std::ranges::find(out.draws, std::string("vulkan"), &DriverDraw::backend);
+  const auto twin = std::ranges::find(out.draws, std::string("twin-double"), &DriverDraw::backend);
+  if (lavapipe != out.draws.end() && twin != out.draws.end() && lavapipe->wall.median > 0)
+    out.twin_of_lavapipe = twin->wall.median / lavapipe->wall.median;
   return out;
 }
 

@@ -35,8 +35,12 @@ struct ReferenceVsDrivers {
   int size = 0;
   TimingInterval reference;  // per render, ms
   int runs = 0;              // timed repeats of each, after one untimed
-  std::vector<DriverDraw> draws;
+  std::vector<DriverDraw> draws;   // lavapipe, llvmpipe's paths, then the shader's double twin
+  double twin_of_lavapipe = 0;     // the twin's draw (one thread) / lavapipe's (0: not measured)
 };
+
+// The twin's goal (docs/twin.md): its draw on one thread within this many of lavapipe's.
+constexpr double twin_draw_goal = 20;
 
 struct SpeedComparisonOptions {
   std::string cases_dir;     // "" = the library's
