@@ -5,7 +5,7 @@
 namespace shaderbed {
 
 ExactDifference exact_difference(const Image& image, const ReferenceImage& reference,
-                                 const std::vector<PixelClass>& classes) {
+                                 const std::vector<PixelClass>& classes, const ChannelTolerance& tolerance) {
   ExactDifference d;
   const bool exact = !image.exact_rgba.empty();
   double sum_sq = 0;
@@ -25,6 +25,8 @@ ExactDifference exact_difference(const Image& image, const ReferenceImage& refer
           continue;
         }
         const double e = std::abs(a - b);
+        const double allowed = tolerance.max_abs + tolerance.max_rel * std::abs(b);
+        if (allowed > 0) d.tolerance_share = std::max(d.tolerance_share, e / allowed);
         sum_sq += e * e;
         ++channels;
         worst = std::max(worst, e);

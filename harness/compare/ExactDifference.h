@@ -17,12 +17,19 @@ struct ExactDifference {
   size_t pixels = 0;         // interior pixels both cover
   size_t nonfinite = 0;      // of those, where either side is NaN or infinite in RGB
   int nonfinite_x = -1, nonfinite_y = -1;   // the first such pixel of the image (row-major)
+  // The largest |image - reference| / (max_abs + max_rel |reference|) per channel, for the
+  // tolerance given: over 1 is outside it (0 without one).
+  double tolerance_share = 0;
+};
+
+struct ChannelTolerance {
+  double max_abs = 0, max_rel = 0;
 };
 
 // `image` is read at its own precision (Image::exact_rgba when it has it); `classes` are
 // classify_pixels(reference).
 ExactDifference exact_difference(const Image& image, const ReferenceImage& reference,
-                                 const std::vector<PixelClass>& classes);
+                                 const std::vector<PixelClass>& classes, const ChannelTolerance& tolerance = {});
 
 // An image kept at its own precision as a reference (a twin's exact values, else its floats).
 ReferenceImage as_reference_image(const Image& image);

@@ -92,6 +92,7 @@ ojson cell_json(const CellResult& r) {
     cell["twin"] = {{"precision", r.twin->precision},
                     {"max_abs", json_number(r.twin->max_abs)},
                     {"rmse", json_number(r.twin->rmse)},
+                    {"share", json_number(r.twin->share)},
                     {"worst_pixel", {r.twin->worst_x, r.twin->worst_y}},
                     {"reference_max_abs", json_number(r.twin->reference_max_abs)},
                     {"ms", json_number(r.twin->ms)},
@@ -325,6 +326,7 @@ CellResult read_cell(const json& c, const std::string& p) {
     read(*t, "precision", tp, f.precision);
     read(*t, "max_abs", tp, f.max_abs);
     read(*t, "rmse", tp, f.rmse);
+    read(*t, "share", tp, f.share);
     if (const json* w = t->contains("worst_pixel") ? &(*t)["worst_pixel"] : nullptr; w && w->is_array() && w->size() == 2 &&
         (*w)[0].is_number_integer() && (*w)[1].is_number_integer()) {
       f.worst_x = (*w)[0].get<int>();

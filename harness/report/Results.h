@@ -158,6 +158,7 @@ struct CellResult {
     std::string precision;            // "double", "float", "half"
     double max_abs = -1, rmse = -1;   // render vs twin, per channel over the twin's interior
     int worst_x = -1, worst_y = -1;   // where max_abs is (row 0 at the top)
+    double share = 0;                 // largest |render - twin| / the cell's interior tolerance there
     double reference_max_abs = -1;    // twin vs the cell's reference over its interior (-1: none)
     double ms = 0;                    // the twin's draw, every core
     std::string precision_note;       // --twin half, beyond the tolerance: which lines are reduced

@@ -16,8 +16,7 @@ std::vector<std::string> twin_lines(const CellResult& r) {
   if (t.reference_max_abs >= 0) {
     line += fmt::format(", the twin {} from the reference", sci(t.reference_max_abs));
     // Which half of the error is over the tolerance says whose it is.
-    const double tolerance = r.interior_threshold;
-    const bool formula = t.reference_max_abs > tolerance, arithmetic = t.max_abs > tolerance;
+    const bool formula = t.reference_max_abs > r.interior_threshold, arithmetic = t.share > 1;
     if (r.status == CellStatus::fail && formula && !arithmetic)
       line += ": the shader computes something else (its exact twin fails too), not fp32 or the driver";
     else if (r.status == CellStatus::fail && arithmetic && !formula)
@@ -25,7 +24,6 @@ std::vector<std::string> twin_lines(const CellResult& r) {
   }
   std::vector<std::string> lines{line};
   if (!t.nonfinite_origin.empty()) lines.push_back("NaN/Inf first made at " + t.nonfinite_origin);
-  if (!t.precision_note.empty()) lines.push_back("precision: " + t.precision_note);
   return lines;
 }
 

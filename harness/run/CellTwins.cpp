@@ -66,9 +66,11 @@ CellResult::TwinFigures CellTwins::figures(GroupDrawer& drawer, const Variant& v
   }
   const ReferenceImage twin_image = as_reference_image(*drawn.image);
   const std::vector<PixelClass> twin_classes = classify_pixels(twin_image);
-  const ExactDifference own = exact_difference(render, twin_image, twin_classes);
+  const ExactDifference own =
+      exact_difference(render, twin_image, twin_classes, {row.interior_threshold, row.interior_threshold_rel});
   f.max_abs = own.max_abs;
   f.rmse = own.rmse;
+  f.share = own.tolerance_share;
   f.worst_x = own.worst_x;
   f.worst_y = own.worst_y;
   if (reference && reference->width == twin_image.width && reference->height == twin_image.height)
@@ -90,13 +92,13 @@ CellResult::TwinFigures CellTwins::figures(GroupDrawer& drawer, const Variant& v
                                                         pixel->first, pixel->second, precision_);
     else f.nonfinite_origin = fmt::format("({}, {}): {}", pixel->first, pixel->second, (*origin)->describe());
   }
-  if (precision_ == "half" && own.max_abs > row.interior_threshold && retrace()) {
+  if (precision_ == "half" && own.tolerance_share > 1 && retrace()) {
     const twin::Program* program = renderer_->last_program();
     std::vector<twin::SourceLine> lines = twin::relaxed_lines(*program->vertex);
     for (const twin::SourceLine& l : twin::relaxed_lines(*program->fragment)) lines.push_back(l);
     f.precision_note = fmt::format("a device that computes RelaxedPrecision (mediump, min16float, half) in 16 bits draws "
-                                   "this {:.3g} away from the render at ({}, {}), over the tolerance {:.3g}; {}",
-                                   own.max_abs, own.worst_x, own.worst_y, row.interior_threshold,
+                                   "this {:.3g} away from the render at ({}, {}), {:.1f}x the cell's tolerance; {}",
+                                   own.max_abs, own.worst_x, own.worst_y, own.tolerance_share,
                                    lines.empty() ? "no line of the shader is marked reduced (the module has no OpLine)"
                                                  : "reduced-precision lines: " + lines_text(lines));
   }

@@ -151,8 +151,11 @@ struct GroupRunner::Impl final : GroupDrawer {
       } else {
         if (r.reference.is_reference)
           r.message = "the reference: every other cell of this case is judged against this render of the original";
-        if (twins_.enabled())
+        if (twins_.enabled()) {
           r.twin = twins_.figures(*this, *g.variant, cell, r, *image, group_image && *group_image ? &**group_image : nullptr);
+          // A note on a passing cell too: desktop drivers hide what a 16-bit device shows.
+          if (!r.twin->precision_note.empty()) r.warnings.push_back("precision: " + r.twin->precision_note);
+        }
         images.push_back(std::move(*image));
         rendered_cells.push_back(results.size());
       }

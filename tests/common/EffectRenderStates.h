@@ -38,13 +38,13 @@ class TransformResolver final : public UniformResolver {
     scene.width = scene.height = size;
     transform_ = scene_quantities(scene).at("transform");
   }
-  Result<std::vector<float>> value(const UniformBlock&, const UniformMember& member) const override {
+  Result<std::vector<double>> value(const UniformBlock&, const UniformMember& member) const override {
     if (member.name == "Transform") return transform_;
     return fail(ErrorStage::bind, "no value for '" + member.name + "'");
   }
 
  private:
-  std::vector<float> transform_;
+  std::vector<double> transform_;
 };
 
 inline Result<CompiledProgram> compile_state_effect(const std::string& states, const std::string& alpha = "1.0") {

@@ -14,8 +14,9 @@ class MapResolver final : public UniformResolver {
  public:
   MapResolver() = default;
   explicit MapResolver(std::map<std::string, std::vector<float>> values) : values_(std::move(values)) {}
-  Result<std::vector<float>> value(const UniformBlock&, const UniformMember& member) const override {
-    if (auto it = values_.find(member.name); it != values_.end()) return it->second;
+  Result<std::vector<double>> value(const UniformBlock&, const UniformMember& member) const override {
+    if (auto it = values_.find(member.name); it != values_.end())
+      return std::vector<double>(it->second.begin(), it->second.end());
     return fail(ErrorStage::bind, "no value bound");
   }
 

@@ -25,8 +25,8 @@ Binding literal(std::vector<double> v) { return Binding{.sources = {{"", std::mo
 const UniformBlock kBlock{.name = "LightBuffer"};
 
 // A 4x4 with distinct entries, column-major: m[c * 4 + r] = 10 r + c (row r, column c).
-std::vector<float> numbered_4x4() {
-  std::vector<float> m(16);
+std::vector<double> numbered_4x4() {
+  std::vector<double> m(16);
   for (int c = 0; c < 4; ++c)
     for (int r = 0; r < 4; ++r) m[size_t(c) * 4 + r] = float(10 * r + c);
   return m;
@@ -40,10 +40,10 @@ TEST(CaseUniforms, LiteralsOfEveryShapeAreTakenAsWritten) {
                            {"weights", literal({1, 2, 3, 4})},
                            {"basis", literal({1, 0, 0, 0, 1, 0, 0, 0, 1})}};
   const CaseUniforms u(table, {}, "case.toml");
-  EXPECT_EQ(*u.value(kBlock, member("padding", 1)), (std::vector<float>{0}));
-  EXPECT_EQ(*u.value(kBlock, member("ambientColor", 3)), (std::vector<float>{0.1f, 0.2f, 0.3f}));
-  EXPECT_EQ(*u.value(kBlock, member("lightCount", 1, 1, 0, false)), (std::vector<float>{3}));
-  EXPECT_EQ(*u.value(kBlock, member("useFog", 1, 1, 0, false)), (std::vector<float>{1}));
+  EXPECT_EQ(*u.value(kBlock, member("padding", 1)), (std::vector<double>{0}));
+  EXPECT_EQ(*u.value(kBlock, member("ambientColor", 3)), (std::vector<double>{0.1, 0.2, 0.3}));
+  EXPECT_EQ(*u.value(kBlock, member("lightCount", 1, 1, 0, false)), (std::vector<double>{3}));
+  EXPECT_EQ(*u.value(kBlock, member("useFog", 1, 1, 0, false)), (std::vector<double>{1}));
   EXPECT_EQ(u.value(kBlock, member("weights", 1, 1, 4))->size(), 4u);   // float weights[4]
   EXPECT_EQ(u.value(kBlock, member("basis", 3, 3))->size(), 9u);        // float3x3
 }
@@ -64,17 +64,17 @@ TEST(CaseUniforms, ALiteralOfTheWrongLengthNamesTheUniformTheCountsAndTheLine) {
 TEST(CaseUniforms, NamesAndLiteralsConcatenate) {
   const BindingTable table{{"SpecularColor", Binding{.sources = {{"specular", {}}, {"", {32}}}}}};
   const CaseUniforms u(table, {{"specular", {1, 0.5, 0.25}}}, "case.toml");
-  EXPECT_EQ(*u.value(kBlock, member("SpecularColor", 4)), (std::vector<float>{1, 0.5f, 0.25f, 32}));
+  EXPECT_EQ(*u.value(kBlock, member("SpecularColor", 4)), (std::vector<double>{1, 0.5, 0.25, 32}));
 }
 
 TEST(CaseUniforms, RowVectorLayoutUploadsTheTranspose) {
   const BindingTable table{{"column", named("m")}, {"row", named("m", MatrixLayout::row_vector)}};
   const CaseUniforms u(table, {{"m", numbered_4x4()}}, "case.toml");
-  const std::vector<float> column = *u.value(kBlock, member("column", 4, 4));
-  const std::vector<float> row = *u.value(kBlock, member("row", 4, 4));
+  const std::vector<double> column = *u.value(kBlock, member("column", 4, 4));
+  const std::vector<double> row = *u.value(kBlock, member("row", 4, 4));
   EXPECT_EQ(column, numbered_4x4());
   for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r) EXPECT_EQ(row[size_t(c) * 4 + r], float(10 * c + r)) << r << "," << c;
+    for (int r = 0; r < 4; ++r) EXPECT_EQ(row[size_t(c) * 4 + r], double(10 * c + r)) << r << "," << c;
 }
 
 TEST(CaseUniforms, RowVectorLayoutOnAVectorIsAnError) {
@@ -89,7 +89,7 @@ TEST(CaseUniforms, RowVectorLayoutOnAVectorIsAnError) {
 TEST(CaseUniforms, AFloat3x3TakesTheUpperLeftOfA4x4Quantity) {
   const BindingTable table{{"World3", named("m")}};
   const CaseUniforms u(table, {{"m", numbered_4x4()}}, "case.toml");
-  EXPECT_EQ(*u.value(kBlock, member("World3", 3, 3)), (std::vector<float>{0, 10, 20, 1, 11, 21, 2, 12, 22}));
+  EXPECT_EQ(*u.value(kBlock, member("World3", 3, 3)), (std::vector<double>{0, 10, 20, 1, 11, 21, 2, 12, 22}));
 }
 
 TEST(CaseUniforms, AnUnknownSourceIsAnErrorWithItsLine) {
@@ -106,9 +106,9 @@ TEST(CaseUniforms, TheCaseAmbientIsBindableAsAmbientLight) {
   c.ambient = glm::dvec3(0.1, 0.2, 0.3);
   c.params["diffuse"] = {1, 1, 1};
   const NamedValues values = bindable_values(SceneSetup{}, c);
-  EXPECT_EQ(values.at("ambient_light"), (std::vector<float>{0.1f, 0.2f, 0.3f, 1.0f}));
+  EXPECT_EQ(values.at("ambient_light"), (std::vector<double>{0.1, 0.2, 0.3, 1.0}));
   EXPECT_EQ(values.at("diffuse").size(), 3u);
-  EXPECT_EQ(bindable_values(SceneSetup{}, Case{}).at("ambient_light"), (std::vector<float>{0, 0, 0, 1}));
+  EXPECT_EQ(bindable_values(SceneSetup{}, Case{}).at("ambient_light"), (std::vector<double>{0, 0, 0, 1}));
 }
 
 }  // namespace
