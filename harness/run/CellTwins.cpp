@@ -33,6 +33,25 @@ std::string lines_text(const std::vector<twin::SourceLine>& lines) {
 
 }  // namespace
 
+void attribute_by_twin(CellResult& r) {
+  if (r.status != CellStatus::fail || !r.twin || !r.twin->error.empty() || r.twin->reference_max_abs < 0) return;
+  const CellResult::TwinFigures& t = *r.twin;
+  const bool shader_passes = t.reference_max_abs <= r.interior_threshold;
+  if (t.share > 1 && shader_passes && t.precision != "half") {
+    r.attribution = "driver";
+    r.attribution_reason = fmt::format("its shader executed exactly ({} twin) is {:.3g} from the reference, within the "
+                                       "tolerance, and the render {:.3g} from that twin: the driver or its path computes "
+                                       "something else",
+                                       t.precision, t.reference_max_abs, t.max_abs);
+  } else if (t.share <= 1 && !shader_passes && r.attribution == "unclear") {
+    r.attribution = "shader";
+    r.attribution_reason = fmt::format("the render draws what its SPIR-V says ({:.3g} from its {} twin, within the "
+                                       "tolerance) and that SPIR-V executed exactly is {:.3g} from the reference: the "
+                                       "shader or its front end computes something else, not the driver",
+                                       t.max_abs, t.precision, t.reference_max_abs);
+  }
+}
+
 CellTwins::CellTwins(const std::string& precision) : precision_(precision), slot_{"twin-" + precision} {
   twin::Precision p;
   if (precision.empty() || !twin::parse_precision(precision, p)) return;

@@ -18,6 +18,12 @@
 
 namespace shaderbed {
 
+// A failed cell's attribution refined by its twin figures: a render its exact shader does
+// not reproduce while that shader passes is the driver's (or its path's); an "unclear" one
+// whose exact shader fails as the render does is the SPIR-V's (the shader or its front end),
+// not the driver's. Other attributions already say more and are kept.
+void attribute_by_twin(CellResult& r);
+
 class CellTwins {
  public:
   explicit CellTwins(const std::string& precision);   // "" = off

@@ -167,6 +167,7 @@ struct GroupRunner::Impl final : GroupDrawer {
       attribute(g, results, images, rendered_cells, **group_image, thresholds_, source.label);
       explain(*reference, g, mesh, results, images, rendered_cells, &**group_image, own_references);
     }
+    for (CellResult& r : results) attribute_by_twin(r);
     return results;
   }
 

@@ -59,6 +59,9 @@ TEST(Twin, TheNaNOfAPlantedSqrtIsTracedToItsLine) {
     // Beside the model, the exact shader fails as the render does: the formula is wrong.
     EXPECT_GT(r.twin->reference_max_abs, 0.1) << r.id();
     EXPECT_LT(r.twin->max_abs, 1e-5) << r.id();
+    // With one language the renders alone cannot tell the front end from the model; the
+    // twin says the SPIR-V itself computes it.
+    EXPECT_EQ(r.attribution, "shader") << r.id() << ": " << r.attribution_reason;
   }
 }
 
