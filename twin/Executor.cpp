@@ -77,7 +77,8 @@ double float_to_integer(const Type& t, double x) {
 
 }  // namespace
 
-Executor::Lanes Executor::Arrivals::take(uint32_t label) {
+template <typename Real>
+typename BasicExecutor<Real>::Lanes BasicExecutor<Real>::Arrivals::take(uint32_t label) {
   for (auto it = at.begin(); it != at.end(); ++it)
     if (it->first == label) {
       Lanes lanes = std::move(it->second);
@@ -87,7 +88,8 @@ Executor::Lanes Executor::Arrivals::take(uint32_t label) {
   return {};
 }
 
-void Executor::Arrivals::add(uint32_t label, const Lanes& lanes) {
+template <typename Real>
+void BasicExecutor<Real>::Arrivals::add(uint32_t label, const Lanes& lanes) {
   if (lanes.empty()) return;
   for (auto& [l, existing] : at)
     if (l == label) {
@@ -99,10 +101,13 @@ void Executor::Arrivals::add(uint32_t label, const Lanes& lanes) {
   at.emplace_back(label, lanes);
 }
 
-Executor::Executor(const Module& module, const BoundResources& resources, Precision precision)
+template <typename Real>
+BasicExecutor<Real>::BasicExecutor(const Module& module, const BoundResources& resources, Precision precision)
     : m_(module), resources_(resources), precision_(precision) {
   register_base_.assign(m_.bound, 0);
   pointers_.resize(m_.bound);
+  constants_.resize(m_.bound);
+  for (uint32_t id = 0; id < m_.bound; ++id) constants_[id].assign(m_.constants[id].begin(), m_.constants[id].end());
   memory_.resize(m_.bound);
   // Registers: every non-pointer result of a function body, and the value parameters.
   std::vector<uint32_t> slot_offset(m_.bound, 0);
@@ -132,18 +137,22 @@ Executor::Executor(const Module& module, const BoundResources& resources, Precis
   }
 }
 
-Executor::Src Executor::src(uint32_t id) const {
-  if (m_.is_constant[id]) return {m_.constants[id].data(), 1, 0};
+template <typename Real>
+typename BasicExecutor<Real>::Src BasicExecutor<Real>::src(uint32_t id) const {
+  if (m_.is_constant[id]) return {constants_[id].data(), 1, 0};
   return {&registers_[register_base_[id]], lanes_, 1};
 }
 
-TwinError Executor::error(const Instruction& in, const std::string& message) const {
+template <typename Real>
+TwinError BasicExecutor<Real>::error(const Instruction& in, const std::string& message) const {
   const SourceLine& line = m_.lines[in.line];
   return TwinError{.message = message, .file = line.file, .line = line.line};
 }
 
-double* Executor::input(uint32_t variable) { return memory_[variable].slots.data(); }
-const double* Executor::output(uint32_t variable) const { return memory_[variable].slots.data(); }
+template <typename Real>
+Real* BasicExecutor<Real>::input(uint32_t variable) { return memory_[variable].slots.data(); }
+template <typename Real>
+const Real* BasicExecutor<Real>::output(uint32_t variable) const { return memory_[variable].slots.data(); }
 
 namespace {
 
@@ -203,7 +212,8 @@ void decode_memory(const Module& m, uint32_t type_id, const BoundResources::Buff
 
 }  // namespace
 
-TwinResult<void> Executor::begin(uint32_t lanes, bool quads) {
+template <typename Real>
+TwinResult<void> BasicExecutor<Real>::begin(uint32_t lanes, bool quads) {
   lanes_ = lanes;
   quads_ = quads;
   // Registers are written before they are read (SSA), so a new batch need not clear them.
@@ -230,15 +240,19 @@ TwinResult<void> Executor::begin(uint32_t lanes, bool quads) {
         if (it == resources_.handles.end())
           return std::unexpected(TwinError{.message = "nothing is bound to " + m_.name_of(var) + " (set " +
                                                       std::to_string(d.set) + ", binding " + std::to_string(d.binding) + ")"});
-        mem.slots.assign(t.slots, double(it->second));
+        mem.slots.assign(t.slots, Real(it->second));
       } else if (storage == spv::StorageClass::PushConstant) {
-        decode_memory(m_, pointer.element, resources_.push_constants, 0, 0, false, mem.slots);
+        std::vector<double> slots;
+        decode_memory(m_, pointer.element, resources_.push_constants, 0, 0, false, slots);
+        mem.slots.assign(slots.begin(), slots.end());
       } else {
         auto it = resources_.buffers.find({uint32_t(d.set), uint32_t(d.binding)});
         if (it == resources_.buffers.end())
           return std::unexpected(TwinError{.message = "no buffer is bound to " + m_.name_of(var) + " (set " +
                                                       std::to_string(d.set) + ", binding " + std::to_string(d.binding) + ")"});
-        decode_memory(m_, pointer.element, it->second, 0, d.matrix_stride, d.row_major, mem.slots);
+        std::vector<double> slots;
+        decode_memory(m_, pointer.element, it->second, 0, d.matrix_stride, d.row_major, slots);
+        mem.slots.assign(slots.begin(), slots.end());
       }
       continue;
     }
@@ -255,7 +269,8 @@ TwinResult<void> Executor::begin(uint32_t lanes, bool quads) {
   return {};
 }
 
-TwinResult<void> Executor::run() {
+template <typename Real>
+TwinResult<void> BasicExecutor<Real>::run() {
   // register_base_ holds slot offsets; scale them once per lane count.
   std::vector<uint32_t> saved = register_base_;
   for (uint32_t& base : register_base_) base *= lanes_;
@@ -268,7 +283,8 @@ TwinResult<void> Executor::run() {
   return result;
 }
 
-std::vector<std::pair<uint32_t, Executor::Lanes>> Executor::branch_targets(const Block& block, const Lanes& lanes) {
+template <typename Real>
+std::vector<std::pair<uint32_t, typename BasicExecutor<Real>::Lanes>> BasicExecutor<Real>::branch_targets(const Block& block, const Lanes& lanes) {
   const Instruction& term = m_.instructions[block.last];
   const auto ops = m_.operands_of(term);
   std::vector<std::pair<uint32_t, Lanes>> targets;
@@ -308,21 +324,22 @@ std::vector<std::pair<uint32_t, Executor::Lanes>> Executor::branch_targets(const
   return targets;
 }
 
-TwinResult<void> Executor::run_block_body(const Block& block, Lanes& lanes) {
+template <typename Real>
+TwinResult<void> BasicExecutor<Real>::run_block_body(const Block& block, Lanes& lanes) {
   uint32_t first = block.first;
   // A block's OpPhis are parallel copies: one may take another phi of the same block from
   // the back edge (a swap in a loop), so every phi reads its value before any is written.
   uint32_t phis_end = first;
   while (phis_end < block.last && Op(m_.instructions[phis_end].op) == Op::OpPhi) ++phis_end;
   if (phis_end - first > 1 && !lanes.empty()) {
-    std::vector<double> read;
+    std::vector<Real> read;
     for (uint32_t i = first; i < phis_end; ++i) {
       const Instruction& in = m_.instructions[i];
       const auto ops = m_.operands_of(in);
       const Src old = src(in.result);
       for (uint32_t s = 0; s < slots_of(in.result); ++s)
         for (uint16_t l : lanes) {
-          double value = old.at(s, l);
+          Real value = old.at(s, l);
           for (size_t k = 0; k + 1 < ops.size(); k += 2)
             if (ops[k + 1] == predecessor_[l]) {
               value = src(ops[k]).at(s, l);
@@ -334,7 +351,7 @@ TwinResult<void> Executor::run_block_body(const Block& block, Lanes& lanes) {
     size_t at = 0;
     for (uint32_t i = first; i < phis_end; ++i) {
       const uint32_t result = m_.instructions[i].result;
-      double* d = dst(result);
+      Real* d = dst(result);
       for (uint32_t s = 0; s < slots_of(result); ++s)
         for (uint16_t l : lanes) d[s * lanes_ + l] = read[at++];
       if (observer_) observe_result(i, lanes);
@@ -346,7 +363,8 @@ TwinResult<void> Executor::run_block_body(const Block& block, Lanes& lanes) {
   return {};
 }
 
-TwinResult<void> Executor::run_region(const Function& f, uint32_t label, Lanes lanes,
+template <typename Real>
+TwinResult<void> BasicExecutor<Real>::run_region(const Function& f, uint32_t label, Lanes lanes,
                                       const std::vector<uint32_t>& stops, Arrivals& out) {
   while (!lanes.empty()) {
     if (contains(stops, label)) {
@@ -363,7 +381,7 @@ TwinResult<void> Executor::run_region(const Function& f, uint32_t label, Lanes l
         const uint32_t value = m_.operands_of(term)[0];
         if (!call_results_.empty()) {
           const Src v = src(value);
-          double* d = dst(call_results_.back());
+          Real* d = dst(call_results_.back());
           const uint32_t n = slots_of(value);
           for (uint16_t l : lanes)
             for (uint32_t s = 0; s < n; ++s) d[s * lanes_ + l] = v.at(s, l);
@@ -411,7 +429,8 @@ TwinResult<void> Executor::run_region(const Function& f, uint32_t label, Lanes l
   return {};
 }
 
-TwinResult<void> Executor::run_loop(const Function& f, const Block& header,
+template <typename Real>
+TwinResult<void> BasicExecutor<Real>::run_loop(const Function& f, const Block& header,
                                     std::vector<std::pair<uint32_t, Lanes>> targets,
                                     const std::vector<uint32_t>& stops, Arrivals& out, Lanes& exits) {
   const uint32_t merge = header.merge, continue_target = header.continue_target;
@@ -448,7 +467,8 @@ TwinResult<void> Executor::run_loop(const Function& f, const Block& header,
   return {};
 }
 
-TwinResult<void> Executor::call(const Instruction& in, Lanes& lanes) {
+template <typename Real>
+TwinResult<void> BasicExecutor<Real>::call(const Instruction& in, Lanes& lanes) {
   const auto ops = m_.operands_of(in);
   auto it = m_.functions.find(ops[0]);
   if (it == m_.functions.end()) return std::unexpected(error(in, "call of an unknown function"));
@@ -460,7 +480,7 @@ TwinResult<void> Executor::call(const Instruction& in, Lanes& lanes) {
       continue;
     }
     const Src a = src(argument);
-    double* d = dst(parameter);
+    Real* d = dst(parameter);
     const uint32_t n = slots_of(parameter);
     for (uint16_t l : lanes)
       for (uint32_t s = 0; s < n; ++s) d[s * lanes_ + l] = a.at(s, l);
@@ -475,7 +495,8 @@ TwinResult<void> Executor::call(const Instruction& in, Lanes& lanes) {
   return {};
 }
 
-void Executor::observe_result(uint32_t index, const Lanes& lanes) {
+template <typename Real>
+void BasicExecutor<Real>::observe_result(uint32_t index, const Lanes& lanes) {
   const Instruction& in = m_.instructions[index];
   if (!in.result || !in.result_type || !std::binary_search(lanes.begin(), lanes.end(), uint16_t(observed_lane_)))
     return;
@@ -483,17 +504,19 @@ void Executor::observe_result(uint32_t index, const Lanes& lanes) {
   if (t.kind == K::pointer || t.kind == K::void_ || t.slots == 0) return;
   std::vector<double> values(t.slots);
   const Src v = src(in.result);
-  for (uint32_t s = 0; s < t.slots; ++s) values[s] = v.at(s, observed_lane_);
+  for (uint32_t s = 0; s < t.slots; ++s) values[s] = double(v.at(s, observed_lane_));
   observer_->value(index, values);
 }
 
-TwinResult<void> Executor::execute(uint32_t index, Lanes& lanes) {
+template <typename Real>
+TwinResult<void> BasicExecutor<Real>::execute(uint32_t index, Lanes& lanes) {
   auto ok = execute_op(index, lanes);
   if (ok && observer_) observe_result(index, lanes);
   return ok;
 }
 
-TwinResult<void> Executor::execute_op(uint32_t index, Lanes& lanes) {
+template <typename Real>
+TwinResult<void> BasicExecutor<Real>::execute_op(uint32_t index, Lanes& lanes) {
   const Instruction& in = m_.instructions[index];
   const auto ops = m_.operands_of(in);
   const Op op = Op(in.op);
@@ -503,7 +526,7 @@ TwinResult<void> Executor::execute_op(uint32_t index, Lanes& lanes) {
 
   auto unary = [&](auto f) {
     const Src a = src(ops[0]);
-    double* d = dst(in.result);
+    Real* d = dst(in.result);
     for (uint32_t s = 0; s < n; ++s)
       for (uint16_t l : lanes) d[s * L + l] = round(index, f(a.at(s, l)));
   };
@@ -511,7 +534,7 @@ TwinResult<void> Executor::execute_op(uint32_t index, Lanes& lanes) {
   auto binary = [&](auto f) {
     const Src a = src(ops[0]), b = src(ops[1]);
     const bool a_scalar = slots_of(ops[0]) == 1 && n > 1, b_scalar = slots_of(ops[1]) == 1 && n > 1;
-    double* d = dst(in.result);
+    Real* d = dst(in.result);
     for (uint32_t s = 0; s < n; ++s)
       for (uint16_t l : lanes) d[s * L + l] = round(index, f(a.at(a_scalar ? 0 : s, l), b.at(b_scalar ? 0 : s, l)));
   };
@@ -519,22 +542,22 @@ TwinResult<void> Executor::execute_op(uint32_t index, Lanes& lanes) {
   const Type& scalar_type = rt.kind == K::vector ? m_.types[rt.element] : rt;
   auto integer_binary = [&](auto f) {
     const Src a = src(ops[0]), b = src(ops[1]);
-    double* d = dst(in.result);
+    Real* d = dst(in.result);
     for (uint32_t s = 0; s < n; ++s)
       for (uint16_t l : lanes) d[s * L + l] = wrap_integer(scalar_type, f(as_integer(a.at(s, l)), as_integer(b.at(s, l))));
   };
   auto compare = [&](auto f) {
     const Src a = src(ops[0]), b = src(ops[1]);
-    double* d = dst(in.result);
+    Real* d = dst(in.result);
     for (uint32_t s = 0; s < n; ++s)
       for (uint16_t l : lanes) d[s * L + l] = f(a.at(s, l), b.at(s, l)) ? 1.0 : 0.0;
   };
-  auto unsigned_of = [&](uint32_t id, double x) -> uint64_t {
+  auto unsigned_of = [&](uint32_t id, Real x) -> uint64_t {
     const Type& t = m_.types[m_.type_of[id]];
     const Type& st = t.kind == K::vector ? m_.types[t.element] : t;
     return st.width == 64 ? uint64_t(as_integer(x)) : uint64_t(uint32_t(uint64_t(as_integer(x))));
   };
-  auto signed_of = [&](uint32_t id, double x) -> int64_t {
+  auto signed_of = [&](uint32_t id, Real x) -> int64_t {
     const Type& t = m_.types[m_.type_of[id]];
     const Type& st = t.kind == K::vector ? m_.types[t.element] : t;
     return st.width == 64 ? as_integer(x) : int64_t(int32_t(uint32_t(uint64_t(as_integer(x)))));
@@ -596,7 +619,7 @@ TwinResult<void> Executor::execute_op(uint32_t index, Lanes& lanes) {
       const Pointer& p = pointers_[ops[0]];
       const uint32_t var = p.variable;
       const Memory& mem = memory_[var];
-      double* d = dst(in.result);
+      Real* d = dst(in.result);
       const bool relaxed_load =
           precision_ == Precision::half && m_.decorations[var].relaxed && float_valued(m_, in.result_type);
       if (mem.shared) {
@@ -651,17 +674,17 @@ TwinResult<void> Executor::execute_op(uint32_t index, Lanes& lanes) {
         pointers_[in.result] = pointers_[ops[0]];
         return {};
       }
-      unary([](double x) { return x; });
+      unary([](Real x) { return x; });
       return {};
     }
     case Op::OpUndef: {
-      double* d = dst(in.result);
+      Real* d = dst(in.result);
       for (uint32_t s = 0; s < n; ++s)
         for (uint16_t l : lanes) d[s * L + l] = 0;
       return {};
     }
     case Op::OpPhi: {
-      double* d = dst(in.result);
+      Real* d = dst(in.result);
       for (uint16_t l : lanes)
         for (size_t i = 0; i + 1 < ops.size(); i += 2)
           if (ops[i + 1] == predecessor_[l]) {
@@ -683,7 +706,7 @@ TwinResult<void> Executor::execute_op(uint32_t index, Lanes& lanes) {
 
     // Composites.
     case Op::OpCompositeConstruct: {
-      double* d = dst(in.result);
+      Real* d = dst(in.result);
       uint32_t at = 0;
       for (uint32_t part : ops) {
         const Src v = src(part);
@@ -710,7 +733,7 @@ TwinResult<void> Executor::execute_op(uint32_t index, Lanes& lanes) {
         }
       }
       const Src c = src(composite);
-      double* d = dst(in.result);
+      Real* d = dst(in.result);
       if (!insert) {
         for (uint32_t s = 0; s < n; ++s)
           for (uint16_t l : lanes) d[s * L + l] = c.at(offset + s, l);
@@ -725,7 +748,7 @@ TwinResult<void> Executor::execute_op(uint32_t index, Lanes& lanes) {
     case Op::OpVectorShuffle: {
       const Src a = src(ops[0]), b = src(ops[1]);
       const uint32_t a_count = slots_of(ops[0]);
-      double* d = dst(in.result);
+      Real* d = dst(in.result);
       for (uint32_t s = 0; s < n; ++s) {
         const uint32_t pick = ops[2 + s];
         for (uint16_t l : lanes)
@@ -736,13 +759,13 @@ TwinResult<void> Executor::execute_op(uint32_t index, Lanes& lanes) {
     case Op::OpVectorExtractDynamic: {
       const Src v = src(ops[0]), k = src(ops[1]);
       const int64_t count = slots_of(ops[0]);
-      double* d = dst(in.result);
+      Real* d = dst(in.result);
       for (uint16_t l : lanes) d[l] = v.at(uint32_t(std::clamp<int64_t>(as_integer(k.at(0, l)), 0, count - 1)), l);
       return {};
     }
     case Op::OpVectorInsertDynamic: {
       const Src v = src(ops[0]), c = src(ops[1]), k = src(ops[2]);
-      double* d = dst(in.result);
+      Real* d = dst(in.result);
       for (uint16_t l : lanes) {
         const int64_t at = as_integer(k.at(0, l));
         for (uint32_t s = 0; s < n; ++s) d[s * L + l] = int64_t(s) == at ? c.at(0, l) : v.at(s, l);
@@ -753,7 +776,7 @@ TwinResult<void> Executor::execute_op(uint32_t index, Lanes& lanes) {
       const Type& column = m_.types[rt.element];
       const uint32_t rows = column.count, cols = rt.count;   // result: cols columns of rows
       const Src a = src(ops[0]);
-      double* d = dst(in.result);
+      Real* d = dst(in.result);
       for (uint32_t c = 0; c < cols; ++c)
         for (uint32_t r = 0; r < rows; ++r)
           for (uint16_t l : lanes) d[(c * rows + r) * L + l] = a.at(r * cols + c, l);
@@ -761,21 +784,21 @@ TwinResult<void> Executor::execute_op(uint32_t index, Lanes& lanes) {
     }
 
     // Float arithmetic.
-    case Op::OpFNegate: unary([](double x) { return -x; }); return {};
-    case Op::OpFAdd: binary([](double x, double y) { return x + y; }); return {};
-    case Op::OpFSub: binary([](double x, double y) { return x - y; }); return {};
+    case Op::OpFNegate: unary([](Real x) { return -x; }); return {};
+    case Op::OpFAdd: binary([](Real x, Real y) { return x + y; }); return {};
+    case Op::OpFSub: binary([](Real x, Real y) { return x - y; }); return {};
     case Op::OpFMul: case Op::OpVectorTimesScalar: case Op::OpMatrixTimesScalar:
-      binary([](double x, double y) { return x * y; });
+      binary([](Real x, Real y) { return x * y; });
       return {};
-    case Op::OpFDiv: binary([](double x, double y) { return x / y; }); return {};
-    case Op::OpFRem: binary([](double x, double y) { return std::fmod(x, y); }); return {};
-    case Op::OpFMod: binary([](double x, double y) { return x - y * std::floor(x / y); }); return {};
+    case Op::OpFDiv: binary([](Real x, Real y) { return x / y; }); return {};
+    case Op::OpFRem: binary([](Real x, Real y) { return std::fmod(x, y); }); return {};
+    case Op::OpFMod: binary([](Real x, Real y) { return x - y * std::floor(x / y); }); return {};
     case Op::OpDot: {
       const Src a = src(ops[0]), b = src(ops[1]);
       const uint32_t count = slots_of(ops[0]);
-      double* d = dst(in.result);
+      Real* d = dst(in.result);
       for (uint16_t l : lanes) {
-        double sum = round(index, a.at(0, l) * b.at(0, l));
+        Real sum = round(index, a.at(0, l) * b.at(0, l));
         for (uint32_t s = 1; s < count; ++s) sum = round(index, sum + round(index, a.at(s, l) * b.at(s, l)));
         d[l] = sum;
       }
@@ -786,10 +809,10 @@ TwinResult<void> Executor::execute_op(uint32_t index, Lanes& lanes) {
       const Src a = src(ops[0]), b = src(ops[1]);
       const Type& at = m_.types[m_.type_of[ops[0]]];
       const Type& bt = m_.types[m_.type_of[ops[1]]];
-      double* d = dst(in.result);
+      Real* d = dst(in.result);
       auto dot_into = [&](uint32_t slot, auto a_at, auto b_at, uint32_t terms) {
         for (uint16_t l : lanes) {
-          double sum = round(index, a_at(0u, l) * b_at(0u, l));
+          Real sum = round(index, a_at(0u, l) * b_at(0u, l));
           for (uint32_t k = 1; k < terms; ++k) sum = round(index, sum + round(index, a_at(k, l) * b_at(k, l)));
           d[slot * L + l] = sum;
         }
@@ -822,14 +845,14 @@ TwinResult<void> Executor::execute_op(uint32_t index, Lanes& lanes) {
     // Integer arithmetic and bits.
     case Op::OpSNegate: {
       const Src a = src(ops[0]);
-      double* d = dst(in.result);
+      Real* d = dst(in.result);
       for (uint32_t s = 0; s < n; ++s)
         for (uint16_t l : lanes) d[s * L + l] = wrap_integer(scalar_type, -as_integer(a.at(s, l)));
       return {};
     }
     case Op::OpNot: {
       const Src a = src(ops[0]);
-      double* d = dst(in.result);
+      Real* d = dst(in.result);
       for (uint32_t s = 0; s < n; ++s)
         for (uint16_t l : lanes) d[s * L + l] = wrap_integer(scalar_type, ~as_integer(a.at(s, l)));
       return {};
@@ -839,7 +862,7 @@ TwinResult<void> Executor::execute_op(uint32_t index, Lanes& lanes) {
     case Op::OpIMul: integer_binary([](int64_t x, int64_t y) { return int64_t(uint64_t(x) * uint64_t(y)); }); return {};
     case Op::OpSDiv: {
       const Src a = src(ops[0]), b = src(ops[1]);
-      double* d = dst(in.result);
+      Real* d = dst(in.result);
       for (uint32_t s = 0; s < n; ++s)
         for (uint16_t l : lanes) {
           const int64_t x = signed_of(ops[0], a.at(s, l)), y = signed_of(ops[1], b.at(s, l));
@@ -849,7 +872,7 @@ TwinResult<void> Executor::execute_op(uint32_t index, Lanes& lanes) {
     }
     case Op::OpUDiv: case Op::OpUMod: {
       const Src a = src(ops[0]), b = src(ops[1]);
-      double* d = dst(in.result);
+      Real* d = dst(in.result);
       for (uint32_t s = 0; s < n; ++s)
         for (uint16_t l : lanes) {
           const uint64_t x = unsigned_of(ops[0], a.at(s, l)), y = unsigned_of(ops[1], b.at(s, l));
@@ -859,7 +882,7 @@ TwinResult<void> Executor::execute_op(uint32_t index, Lanes& lanes) {
     }
     case Op::OpSRem: case Op::OpSMod: {
       const Src a = src(ops[0]), b = src(ops[1]);
-      double* d = dst(in.result);
+      Real* d = dst(in.result);
       for (uint32_t s = 0; s < n; ++s)
         for (uint16_t l : lanes) {
           const int64_t x = signed_of(ops[0], a.at(s, l)), y = signed_of(ops[1], b.at(s, l));
@@ -872,7 +895,7 @@ TwinResult<void> Executor::execute_op(uint32_t index, Lanes& lanes) {
     case Op::OpShiftLeftLogical: case Op::OpShiftRightLogical: case Op::OpShiftRightArithmetic: {
       const Src a = src(ops[0]), b = src(ops[1]);
       const uint32_t width = scalar_type.width;
-      double* d = dst(in.result);
+      Real* d = dst(in.result);
       for (uint32_t s = 0; s < n; ++s)
         for (uint16_t l : lanes) {
           const uint64_t shift = unsigned_of(ops[1], b.at(s, l)) % width;
@@ -891,67 +914,67 @@ TwinResult<void> Executor::execute_op(uint32_t index, Lanes& lanes) {
     // Conversions.
     case Op::OpConvertFToS: case Op::OpConvertFToU: {
       const Src a = src(ops[0]);
-      double* d = dst(in.result);
+      Real* d = dst(in.result);
       for (uint32_t s = 0; s < n; ++s)
         for (uint16_t l : lanes) d[s * L + l] = float_to_integer(scalar_type, a.at(s, l));
       return {};
     }
     case Op::OpConvertSToF: case Op::OpConvertUToF: case Op::OpFConvert:
-      unary([](double x) { return x; });
+      unary([](Real x) { return x; });
       return {};
     case Op::OpSConvert: case Op::OpUConvert: {
       const Src a = src(ops[0]);
-      double* d = dst(in.result);
+      Real* d = dst(in.result);
       for (uint32_t s = 0; s < n; ++s)
         for (uint16_t l : lanes) d[s * L + l] = wrap_integer(scalar_type, as_integer(a.at(s, l)));
       return {};
     }
-    case Op::OpQuantizeToF16: unary([](double x) { return round_to_half(x); }); return {};
+    case Op::OpQuantizeToF16: unary([](Real x) { return round_to_half(x); }); return {};
     case Op::OpBitcast: {
       const Type& from_type = m_.types[m_.type_of[ops[0]]];
       const Type& from = from_type.kind == K::vector ? m_.types[from_type.element] : from_type;
       if (from.width != scalar_type.width || slots_of(ops[0]) != n)
         return std::unexpected(error(in, "the twin bitcasts only between types of one width and size"));
       const Src a = src(ops[0]);
-      double* d = dst(in.result);
+      Real* d = dst(in.result);
       for (uint32_t s = 0; s < n; ++s)
         for (uint16_t l : lanes) d[s * L + l] = from_bits(scalar_type, bits_of(from, a.at(s, l)));
       return {};
     }
 
     // Comparisons and logic.
-    case Op::OpFOrdEqual: compare([](double x, double y) { return x == y; }); return {};
-    case Op::OpFUnordEqual: compare([](double x, double y) { return !(x < y || x > y); }); return {};
-    case Op::OpFOrdNotEqual: compare([](double x, double y) { return x < y || x > y; }); return {};
-    case Op::OpFUnordNotEqual: compare([](double x, double y) { return !(x == y); }); return {};
-    case Op::OpFOrdLessThan: compare([](double x, double y) { return x < y; }); return {};
-    case Op::OpFUnordLessThan: compare([](double x, double y) { return !(x >= y); }); return {};
-    case Op::OpFOrdGreaterThan: compare([](double x, double y) { return x > y; }); return {};
-    case Op::OpFUnordGreaterThan: compare([](double x, double y) { return !(x <= y); }); return {};
-    case Op::OpFOrdLessThanEqual: compare([](double x, double y) { return x <= y; }); return {};
-    case Op::OpFUnordLessThanEqual: compare([](double x, double y) { return !(x > y); }); return {};
-    case Op::OpFOrdGreaterThanEqual: compare([](double x, double y) { return x >= y; }); return {};
-    case Op::OpFUnordGreaterThanEqual: compare([](double x, double y) { return !(x < y); }); return {};
-    case Op::OpIEqual: case Op::OpLogicalEqual: compare([](double x, double y) { return x == y; }); return {};
-    case Op::OpINotEqual: case Op::OpLogicalNotEqual: compare([](double x, double y) { return x != y; }); return {};
-    case Op::OpSLessThan: case Op::OpULessThan: compare([](double x, double y) { return x < y; }); return {};
-    case Op::OpSGreaterThan: case Op::OpUGreaterThan: compare([](double x, double y) { return x > y; }); return {};
-    case Op::OpSLessThanEqual: case Op::OpULessThanEqual: compare([](double x, double y) { return x <= y; }); return {};
+    case Op::OpFOrdEqual: compare([](Real x, Real y) { return x == y; }); return {};
+    case Op::OpFUnordEqual: compare([](Real x, Real y) { return !(x < y || x > y); }); return {};
+    case Op::OpFOrdNotEqual: compare([](Real x, Real y) { return x < y || x > y; }); return {};
+    case Op::OpFUnordNotEqual: compare([](Real x, Real y) { return !(x == y); }); return {};
+    case Op::OpFOrdLessThan: compare([](Real x, Real y) { return x < y; }); return {};
+    case Op::OpFUnordLessThan: compare([](Real x, Real y) { return !(x >= y); }); return {};
+    case Op::OpFOrdGreaterThan: compare([](Real x, Real y) { return x > y; }); return {};
+    case Op::OpFUnordGreaterThan: compare([](Real x, Real y) { return !(x <= y); }); return {};
+    case Op::OpFOrdLessThanEqual: compare([](Real x, Real y) { return x <= y; }); return {};
+    case Op::OpFUnordLessThanEqual: compare([](Real x, Real y) { return !(x > y); }); return {};
+    case Op::OpFOrdGreaterThanEqual: compare([](Real x, Real y) { return x >= y; }); return {};
+    case Op::OpFUnordGreaterThanEqual: compare([](Real x, Real y) { return !(x < y); }); return {};
+    case Op::OpIEqual: case Op::OpLogicalEqual: compare([](Real x, Real y) { return x == y; }); return {};
+    case Op::OpINotEqual: case Op::OpLogicalNotEqual: compare([](Real x, Real y) { return x != y; }); return {};
+    case Op::OpSLessThan: case Op::OpULessThan: compare([](Real x, Real y) { return x < y; }); return {};
+    case Op::OpSGreaterThan: case Op::OpUGreaterThan: compare([](Real x, Real y) { return x > y; }); return {};
+    case Op::OpSLessThanEqual: case Op::OpULessThanEqual: compare([](Real x, Real y) { return x <= y; }); return {};
     case Op::OpSGreaterThanEqual: case Op::OpUGreaterThanEqual:
-      compare([](double x, double y) { return x >= y; });
+      compare([](Real x, Real y) { return x >= y; });
       return {};
-    case Op::OpLogicalAnd: compare([](double x, double y) { return x != 0 && y != 0; }); return {};
-    case Op::OpLogicalOr: compare([](double x, double y) { return x != 0 || y != 0; }); return {};
+    case Op::OpLogicalAnd: compare([](Real x, Real y) { return x != 0 && y != 0; }); return {};
+    case Op::OpLogicalOr: compare([](Real x, Real y) { return x != 0 || y != 0; }); return {};
     case Op::OpLogicalNot: {
       const Src a = src(ops[0]);
-      double* d = dst(in.result);
+      Real* d = dst(in.result);
       for (uint32_t s = 0; s < n; ++s)
         for (uint16_t l : lanes) d[s * L + l] = a.at(s, l) == 0 ? 1.0 : 0.0;
       return {};
     }
     case Op::OpIsNan: case Op::OpIsInf: {
       const Src a = src(ops[0]);
-      double* d = dst(in.result);
+      Real* d = dst(in.result);
       for (uint32_t s = 0; s < n; ++s)
         for (uint16_t l : lanes) d[s * L + l] = op == Op::OpIsNan ? std::isnan(a.at(s, l)) : std::isinf(a.at(s, l));
       return {};
@@ -959,7 +982,7 @@ TwinResult<void> Executor::execute_op(uint32_t index, Lanes& lanes) {
     case Op::OpAny: case Op::OpAll: {
       const Src a = src(ops[0]);
       const uint32_t count = slots_of(ops[0]);
-      double* d = dst(in.result);
+      Real* d = dst(in.result);
       for (uint16_t l : lanes) {
         bool any = false, all = true;
         for (uint32_t s = 0; s < count; ++s) {
@@ -973,7 +996,7 @@ TwinResult<void> Executor::execute_op(uint32_t index, Lanes& lanes) {
     case Op::OpSelect: {
       const Src c = src(ops[0]), a = src(ops[1]), b = src(ops[2]);
       const bool scalar_condition = slots_of(ops[0]) == 1;
-      double* d = dst(in.result);
+      Real* d = dst(in.result);
       for (uint32_t s = 0; s < n; ++s)
         for (uint16_t l : lanes) d[s * L + l] = c.at(scalar_condition ? 0 : s, l) != 0 ? a.at(s, l) : b.at(s, l);
       return {};
@@ -984,7 +1007,7 @@ TwinResult<void> Executor::execute_op(uint32_t index, Lanes& lanes) {
     case Op::OpDPdx: case Op::OpDPdy: case Op::OpFwidth: case Op::OpDPdxFine: case Op::OpDPdyFine:
     case Op::OpFwidthFine: case Op::OpDPdxCoarse: case Op::OpDPdyCoarse: case Op::OpFwidthCoarse: {
       const Src a = src(ops[0]);
-      double* d = dst(in.result);
+      Real* d = dst(in.result);
       const bool coarse = op == Op::OpDPdxCoarse || op == Op::OpDPdyCoarse || op == Op::OpFwidthCoarse;
       const bool want_x = op == Op::OpDPdx || op == Op::OpDPdxFine || op == Op::OpDPdxCoarse;
       const bool want_y = op == Op::OpDPdy || op == Op::OpDPdyFine || op == Op::OpDPdyCoarse;
@@ -995,8 +1018,8 @@ TwinResult<void> Executor::execute_op(uint32_t index, Lanes& lanes) {
             continue;
           }
           const uint32_t q = l & ~3u, row = coarse ? 0 : (l & 2u), column = coarse ? 0 : (l & 1u);
-          const double dx = round(index, a.at(s, q + row + 1) - a.at(s, q + row));
-          const double dy = round(index, a.at(s, q + column + 2) - a.at(s, q + column));
+          const Real dx = round(index, a.at(s, q + row + 1) - a.at(s, q + row));
+          const Real dy = round(index, a.at(s, q + column + 2) - a.at(s, q + column));
           d[s * L + l] = want_x ? dx : want_y ? dy : round(index, std::fabs(dx) + std::fabs(dy));
         }
       return {};
@@ -1015,5 +1038,8 @@ TwinResult<void> Executor::execute_op(uint32_t index, Lanes& lanes) {
       return std::unexpected(error(in, "the twin does not support " + opcode_name(in.op)));
   }
 }
+
+template class BasicExecutor<double>;
+template class BasicExecutor<long double>;
 
 }  // namespace twin

@@ -46,16 +46,17 @@ class Observer {
   virtual void value(uint32_t instruction, std::span<const double> values) = 0;
 };
 
-class Executor {
+template <typename Real>
+class BasicExecutor {
  public:
-  Executor(const Module& module, const BoundResources& resources, Precision precision);
+  BasicExecutor(const Module& module, const BoundResources& resources, Precision precision);
 
   // A new batch of `lanes` invocations; quads: lanes form 2x2 quads (fragment stage).
   // Input variables are then filled through input(), outputs read through output().
   TwinResult<void> begin(uint32_t lanes, bool quads);
   // Slots of an Input variable for the batch: slot s of lane l at [s * lanes + l].
-  double* input(uint32_t variable);
-  const double* output(uint32_t variable) const;
+  Real* input(uint32_t variable);
+  const Real* output(uint32_t variable) const;
   TwinResult<void> run();
   // Lanes that executed OpKill / OpTerminateInvocation / OpDemoteToHelperInvocation.
   bool discarded(uint32_t lane) const { return discarded_[lane] != 0; }
@@ -81,14 +82,14 @@ class Executor {
     uint32_t at(uint32_t lane) const { return lane_offset.empty() ? offset : lane_offset[lane]; }
   };
   struct Memory {
-    std::vector<double> slots;   // slot s of lane l at [s * lanes + l]; shared memory has lanes 1
+    std::vector<Real> slots;   // slot s of lane l at [s * lanes + l]; shared memory has lanes 1
     uint32_t lanes = 1;
     bool shared = false;         // uniform, push-constant or handle memory: one copy for every lane
   };
   struct Src {
-    const double* p;
+    const Real* p;
     size_t slot_stride, lane_stride;
-    double at(uint32_t slot, uint32_t lane) const { return p[slot * slot_stride + lane * lane_stride]; }
+    Real at(uint32_t slot, uint32_t lane) const { return p[slot * slot_stride + lane * lane_stride]; }
   };
 
   TwinResult<void> run_region(const Function& f, uint32_t label, Lanes lanes, const std::vector<uint32_t>& stops,
@@ -105,11 +106,11 @@ class Executor {
   TwinError error(const Instruction& in, const std::string& message) const;
 
   Src src(uint32_t id) const;
-  double* dst(uint32_t id) { return &registers_[register_base_[id]]; }
+  Real* dst(uint32_t id) { return &registers_[register_base_[id]]; }
   uint32_t slots_of(uint32_t id) const { return m_.types[m_.type_of[id]].slots; }
-  double round(uint32_t instruction, double x) const {
+  Real round(uint32_t instruction, Real x) const {
     const uint8_t kind = rounding_[instruction];
-    return kind == 0 ? x : kind == 1 ? round_to_float(x) : round_to_half(x);
+    return kind == 0 ? x : kind == 1 ? Real(round_to_float(double(x))) : Real(round_to_half(double(x)));
   }
   Memory& memory_of(uint32_t variable) { return memory_[variable]; }
   void observe_result(uint32_t index, const Lanes& lanes);
@@ -120,7 +121,8 @@ class Executor {
   uint32_t lanes_ = 0;
   bool quads_ = false;
   std::vector<uint32_t> register_base_;   // by id
-  std::vector<double> registers_;
+  std::vector<Real> registers_;
+  std::vector<std::vector<Real>> constants_;   // Module::constants in this executor's type
   std::vector<Pointer> pointers_;         // by id
   std::vector<Memory> memory_;            // by variable id
   std::vector<uint8_t> rounding_;         // by instruction: 0 none, 1 binary32, 2 binary16
@@ -131,5 +133,12 @@ class Executor {
   uint32_t observed_lane_ = 0;
   uint32_t register_slots_ = 0;           // per lane, over every register
 };
+
+// The twin in double (float and half round their results), and in long double (a 64-bit
+// significand) to check the double twin itself at chosen pixels.
+using Executor = BasicExecutor<double>;
+using WideExecutor = BasicExecutor<long double>;
+extern template class BasicExecutor<double>;
+extern template class BasicExecutor<long double>;
 
 }  // namespace twin

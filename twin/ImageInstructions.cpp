@@ -19,12 +19,13 @@ constexpr uint32_t sampler_shift = 65536;
 
 }  // namespace
 
-TwinResult<void> Executor::execute_image(uint32_t index, const Lanes& lanes) {
+template <typename Real>
+TwinResult<void> BasicExecutor<Real>::execute_image(uint32_t index, const Lanes& lanes) {
   const Instruction& in = m_.instructions[index];
   const auto ops = m_.operands_of(in);
   const Op op = Op(in.op);
   const uint32_t L = lanes_;
-  double* d = dst(in.result);
+  Real* d = dst(in.result);
   const Src handle = src(ops[0]);
 
   struct Bound {
@@ -85,9 +86,10 @@ TwinResult<void> Executor::execute_image(uint32_t index, const Lanes& lanes) {
         return std::unexpected(error(in, "the twin does not support texel offsets or other image operands"));
       auto coordinate_at = [&](uint16_t lane) {
         std::array<double, 3> c{0, 0, 0};
-        const double q = projective ? coordinate.at(coordinates, lane) : 1.0;
-        for (uint32_t k = 0; k < coordinates; ++k) c[k] = projective ? round(index, coordinate.at(k, lane) / q)
-                                                                     : coordinate.at(k, lane);
+        // Sampling works in double: the texels are floats.
+        const Real q = projective ? coordinate.at(coordinates, lane) : Real(1);
+        for (uint32_t k = 0; k < coordinates; ++k)
+          c[k] = double(projective ? round(index, coordinate.at(k, lane) / q) : coordinate.at(k, lane));
         return c;
       };
       for (uint16_t l : lanes) {
@@ -97,12 +99,12 @@ TwinResult<void> Executor::execute_image(uint32_t index, const Lanes& lanes) {
         if (grad_x) {
           CoordinateDerivatives g;
           for (uint32_t k = 0; k < coordinates; ++k) {
-            g.dx[k] = grad_x->at(k, l);
-            g.dy[k] = grad_y->at(k, l);
+            g.dx[k] = double(grad_x->at(k, l));
+            g.dy[k] = double(grad_y->at(k, l));
           }
           lambda = implicit_lod(*b.image, coordinate_at(l), g);
         } else if (lod) {
-          lambda = lod->at(0, l);
+          lambda = double(lod->at(0, l));
         } else if (implicit && quads_) {
           // One level of detail per quad, from its first row and column (llvmpipe's default).
           const uint16_t q = uint16_t(l & ~3u);
@@ -114,7 +116,7 @@ TwinResult<void> Executor::execute_image(uint32_t index, const Lanes& lanes) {
           }
           lambda = implicit_lod(*b.image, c0, g);
         }
-        if (bias) lambda += bias->at(0, l);
+        if (bias) lambda += double(bias->at(0, l));
         if (op == Op::OpImageQueryLod) {
           const double levels = level_count(*b.image);
           const double clamped = b.sampler.mip_filter == MipFilter::none ? 0.0 : std::clamp(lambda, 0.0, levels - 1);
@@ -137,8 +139,8 @@ TwinResult<void> Executor::execute_image(uint32_t index, const Lanes& lanes) {
         const Bound b = bound(l);
         if (!b.image) return missing();
         std::array<int, 3> texel{0, 0, 0};
-        for (uint32_t k = 0; k < coordinates; ++k) texel[k] = int(std::clamp(coordinate.at(k, l), -1e9, 1e9));
-        const auto value = fetch(*b.image, b.sampler.srgb, texel, lod ? int(lod->at(0, l)) : 0);
+        for (uint32_t k = 0; k < coordinates; ++k) texel[k] = int(std::clamp(double(coordinate.at(k, l)), -1e9, 1e9));
+        const auto value = fetch(*b.image, b.sampler.srgb, texel, lod ? int(double(lod->at(0, l))) : 0);
         const uint32_t n = slots_of(in.result);
         for (uint32_t s = 0; s < n && s < 4; ++s) d[s * L + l] = round(index, value[s]);
       }
@@ -150,7 +152,7 @@ TwinResult<void> Executor::execute_image(uint32_t index, const Lanes& lanes) {
       for (uint16_t l : lanes) {
         const Bound b = bound(l);
         if (!b.image) return missing();
-        const auto size = level_size(*b.image, lod ? int(lod->at(0, l)) : 0);
+        const auto size = level_size(*b.image, lod ? int(double(lod->at(0, l))) : 0);
         for (uint32_t s = 0; s < n && s < 3; ++s) d[s * L + l] = size[s];
       }
       return {};
@@ -165,5 +167,8 @@ TwinResult<void> Executor::execute_image(uint32_t index, const Lanes& lanes) {
     default: return std::unexpected(error(in, "the twin does not support " + opcode_name(in.op)));
   }
 }
+
+template TwinResult<void> BasicExecutor<double>::execute_image(uint32_t, const Lanes&);
+template TwinResult<void> BasicExecutor<long double>::execute_image(uint32_t, const Lanes&);
 
 }  // namespace twin

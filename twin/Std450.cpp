@@ -7,20 +7,24 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "twin/Executor.h"
 
 namespace twin {
 namespace {
 
-constexpr double nan_value = std::numeric_limits<double>::quiet_NaN();
+template <typename T>
+constexpr T nan_value = std::numeric_limits<T>::quiet_NaN();
 
 // GPUs compute pow as exp2(y * log2(x)): undefined (NaN) for x < 0.
-double gpu_pow(double x, double y) { return x < 0 ? nan_value : std::pow(x, y); }
+template <typename T>
+T gpu_pow(T x, T y) { return x < 0 ? nan_value<T> : std::pow(x, y); }
 
-double determinant(std::vector<double> a, int n) {
+template <typename T>
+T determinant(std::vector<T> a, int n) {
   // Gaussian elimination with partial pivoting; column-major a[c * n + r].
-  double det = 1;
+  T det = 1;
   for (int c = 0; c < n; ++c) {
     int pivot = c;
     for (int r = c + 1; r < n; ++r)
@@ -32,18 +36,19 @@ double determinant(std::vector<double> a, int n) {
     }
     det *= a[c * n + c];
     for (int r = c + 1; r < n; ++r) {
-      const double f = a[c * n + r] / a[c * n + c];
+      const T f = a[c * n + r] / a[c * n + c];
       for (int k = c; k < n; ++k) a[k * n + r] -= f * a[k * n + c];
     }
   }
   return det;
 }
 
-std::vector<double> inverse(const std::vector<double>& m, int n) {
+template <typename T>
+std::vector<T> inverse(const std::vector<T>& m, int n) {
   // Gauss-Jordan on [M | I]; a singular matrix gives infinities/NaN as a GPU's would.
-  std::vector<double> a(m), inv(size_t(n) * n, 0.0);
+  std::vector<T> a(m), inv(size_t(n) * n, T(0));
   for (int i = 0; i < n; ++i) inv[i * n + i] = 1;
-  auto at = [n](std::vector<double>& v, int r, int c) -> double& { return v[size_t(c) * n + r]; };
+  auto at = [n](std::vector<T>& v, int r, int c) -> T& { return v[size_t(c) * n + r]; };
   for (int c = 0; c < n; ++c) {
     int pivot = c;
     for (int r = c + 1; r < n; ++r)
@@ -52,14 +57,14 @@ std::vector<double> inverse(const std::vector<double>& m, int n) {
       std::swap(at(a, c, k), at(a, pivot, k));
       std::swap(at(inv, c, k), at(inv, pivot, k));
     }
-    const double p = at(a, c, c);
+    const T p = at(a, c, c);
     for (int k = 0; k < n; ++k) {
       at(a, c, k) /= p;
       at(inv, c, k) /= p;
     }
     for (int r = 0; r < n; ++r) {
       if (r == c) continue;
-      const double f = at(a, r, c);
+      const T f = at(a, r, c);
       for (int k = 0; k < n; ++k) {
         at(a, r, k) -= f * at(a, c, k);
         at(inv, r, k) -= f * at(inv, c, k);
@@ -71,7 +76,8 @@ std::vector<double> inverse(const std::vector<double>& m, int n) {
 
 }  // namespace
 
-TwinResult<void> Executor::execute_ext(uint32_t index, const Lanes& lanes) {
+template <typename Real>
+TwinResult<void> BasicExecutor<Real>::execute_ext(uint32_t index, const Lanes& lanes) {
   const Instruction& in = m_.instructions[index];
   const auto all = m_.operands_of(in);
   if (!m_.glsl_std450[all[0]])
@@ -81,8 +87,8 @@ TwinResult<void> Executor::execute_ext(uint32_t index, const Lanes& lanes) {
   const uint32_t L = lanes_;
   const Type& rt = m_.types[in.result_type];
   const uint32_t n = rt.slots;
-  double* d = dst(in.result);
-  const auto R = [&](double x) { return round(index, x); };
+  Real* d = dst(in.result);
+  const auto R = [&](Real x) { return round(index, x); };
   auto arg = [&](size_t i) { return src(ops[i]); };
   auto scalar_arg = [&](size_t i) { return slots_of(ops[i]) == 1 && n > 1; };
   auto map1 = [&](auto f) {
@@ -108,59 +114,59 @@ TwinResult<void> Executor::execute_ext(uint32_t index, const Lanes& lanes) {
       for (uint16_t l : lanes) d[s * L + l] = f(a.at(s, l));
   };
   auto dot = [&](const Src& a, const Src& b, uint32_t count, uint16_t l) {
-    double sum = R(a.at(0, l) * b.at(0, l));
+    Real sum = R(a.at(0, l) * b.at(0, l));
     for (uint32_t s = 1; s < count; ++s) sum = R(sum + R(a.at(s, l) * b.at(s, l)));
     return sum;
   };
 
   switch (op) {
-    case GLSLstd450Round: map1([](double x) { return std::round(x); }); break;
-    case GLSLstd450RoundEven: map1([](double x) { return std::nearbyint(x); }); break;
-    case GLSLstd450Trunc: map1([](double x) { return std::trunc(x); }); break;
-    case GLSLstd450FAbs: map1([](double x) { return std::fabs(x); }); break;
-    case GLSLstd450SAbs: integer([](double x) { return std::fabs(x); }); break;
+    case GLSLstd450Round: map1([](Real x) { return std::round(x); }); break;
+    case GLSLstd450RoundEven: map1([](Real x) { return std::nearbyint(x); }); break;
+    case GLSLstd450Trunc: map1([](Real x) { return std::trunc(x); }); break;
+    case GLSLstd450FAbs: map1([](Real x) { return std::fabs(x); }); break;
+    case GLSLstd450SAbs: integer([](Real x) { return std::fabs(x); }); break;
     case GLSLstd450FSign: case GLSLstd450SSign:
-      map1([](double x) { return x > 0 ? 1.0 : x < 0 ? -1.0 : x; });
+      map1([](Real x) { return x > 0 ? 1.0 : x < 0 ? -1.0 : x; });
       break;
-    case GLSLstd450Floor: map1([](double x) { return std::floor(x); }); break;
-    case GLSLstd450Ceil: map1([](double x) { return std::ceil(x); }); break;
+    case GLSLstd450Floor: map1([](Real x) { return std::floor(x); }); break;
+    case GLSLstd450Ceil: map1([](Real x) { return std::ceil(x); }); break;
     case GLSLstd450Fract: {
       const Src a = arg(0);
       for (uint32_t s = 0; s < n; ++s)
         for (uint16_t l : lanes) d[s * L + l] = R(a.at(s, l) - std::floor(a.at(s, l)));
       break;
     }
-    case GLSLstd450Radians: map1([](double x) { return x * (M_PI / 180.0); }); break;
-    case GLSLstd450Degrees: map1([](double x) { return x * (180.0 / M_PI); }); break;
-    case GLSLstd450Sin: map1([](double x) { return std::sin(x); }); break;
-    case GLSLstd450Cos: map1([](double x) { return std::cos(x); }); break;
-    case GLSLstd450Tan: map1([](double x) { return std::tan(x); }); break;
-    case GLSLstd450Asin: map1([](double x) { return std::asin(x); }); break;
-    case GLSLstd450Acos: map1([](double x) { return std::acos(x); }); break;
-    case GLSLstd450Atan: map1([](double x) { return std::atan(x); }); break;
-    case GLSLstd450Sinh: map1([](double x) { return std::sinh(x); }); break;
-    case GLSLstd450Cosh: map1([](double x) { return std::cosh(x); }); break;
-    case GLSLstd450Tanh: map1([](double x) { return std::tanh(x); }); break;
-    case GLSLstd450Asinh: map1([](double x) { return std::asinh(x); }); break;
-    case GLSLstd450Acosh: map1([](double x) { return std::acosh(x); }); break;
-    case GLSLstd450Atanh: map1([](double x) { return std::atanh(x); }); break;
-    case GLSLstd450Atan2: map2([](double y, double x) { return std::atan2(y, x); }); break;
-    case GLSLstd450Pow: map2(gpu_pow); break;
-    case GLSLstd450Exp: map1([](double x) { return std::exp(x); }); break;
-    case GLSLstd450Log: map1([](double x) { return std::log(x); }); break;
-    case GLSLstd450Exp2: map1([](double x) { return std::exp2(x); }); break;
-    case GLSLstd450Log2: map1([](double x) { return std::log2(x); }); break;
-    case GLSLstd450Sqrt: map1([](double x) { return std::sqrt(x); }); break;
-    case GLSLstd450InverseSqrt: map1([](double x) { return 1.0 / std::sqrt(x); }); break;
-    case GLSLstd450FMin: case GLSLstd450NMin: map2([](double x, double y) { return std::fmin(x, y); }); break;
-    case GLSLstd450FMax: case GLSLstd450NMax: map2([](double x, double y) { return std::fmax(x, y); }); break;
-    case GLSLstd450UMin: case GLSLstd450SMin: map2([](double x, double y) { return std::min(x, y); }); break;
-    case GLSLstd450UMax: case GLSLstd450SMax: map2([](double x, double y) { return std::max(x, y); }); break;
+    case GLSLstd450Radians: map1([](Real x) { return x * (std::numbers::pi_v<Real> / 180.0); }); break;
+    case GLSLstd450Degrees: map1([](Real x) { return x * (180.0 / std::numbers::pi_v<Real>); }); break;
+    case GLSLstd450Sin: map1([](Real x) { return std::sin(x); }); break;
+    case GLSLstd450Cos: map1([](Real x) { return std::cos(x); }); break;
+    case GLSLstd450Tan: map1([](Real x) { return std::tan(x); }); break;
+    case GLSLstd450Asin: map1([](Real x) { return std::asin(x); }); break;
+    case GLSLstd450Acos: map1([](Real x) { return std::acos(x); }); break;
+    case GLSLstd450Atan: map1([](Real x) { return std::atan(x); }); break;
+    case GLSLstd450Sinh: map1([](Real x) { return std::sinh(x); }); break;
+    case GLSLstd450Cosh: map1([](Real x) { return std::cosh(x); }); break;
+    case GLSLstd450Tanh: map1([](Real x) { return std::tanh(x); }); break;
+    case GLSLstd450Asinh: map1([](Real x) { return std::asinh(x); }); break;
+    case GLSLstd450Acosh: map1([](Real x) { return std::acosh(x); }); break;
+    case GLSLstd450Atanh: map1([](Real x) { return std::atanh(x); }); break;
+    case GLSLstd450Atan2: map2([](Real y, Real x) { return std::atan2(y, x); }); break;
+    case GLSLstd450Pow: map2([](Real x, Real y) { return gpu_pow(x, y); }); break;
+    case GLSLstd450Exp: map1([](Real x) { return std::exp(x); }); break;
+    case GLSLstd450Log: map1([](Real x) { return std::log(x); }); break;
+    case GLSLstd450Exp2: map1([](Real x) { return std::exp2(x); }); break;
+    case GLSLstd450Log2: map1([](Real x) { return std::log2(x); }); break;
+    case GLSLstd450Sqrt: map1([](Real x) { return std::sqrt(x); }); break;
+    case GLSLstd450InverseSqrt: map1([](Real x) { return 1.0 / std::sqrt(x); }); break;
+    case GLSLstd450FMin: case GLSLstd450NMin: map2([](Real x, Real y) { return std::fmin(x, y); }); break;
+    case GLSLstd450FMax: case GLSLstd450NMax: map2([](Real x, Real y) { return std::fmax(x, y); }); break;
+    case GLSLstd450UMin: case GLSLstd450SMin: map2([](Real x, Real y) { return std::min(x, y); }); break;
+    case GLSLstd450UMax: case GLSLstd450SMax: map2([](Real x, Real y) { return std::max(x, y); }); break;
     case GLSLstd450FClamp: case GLSLstd450NClamp:
-      map3([](double x, double lo, double hi) { return std::fmin(std::fmax(x, lo), hi); });
+      map3([](Real x, Real lo, Real hi) { return std::fmin(std::fmax(x, lo), hi); });
       break;
     case GLSLstd450UClamp: case GLSLstd450SClamp:
-      map3([](double x, double lo, double hi) { return std::min(std::max(x, lo), hi); });
+      map3([](Real x, Real lo, Real hi) { return std::min(std::max(x, lo), hi); });
       break;
     case GLSLstd450FMix: {   // x + (y - x) * a, each step rounded
       const Src x = arg(0), y = arg(1), a = arg(2);
@@ -170,7 +176,7 @@ TwinResult<void> Executor::execute_ext(uint32_t index, const Lanes& lanes) {
           d[s * L + l] = R(x.at(s, l) + R(R(y.at(s, l) - x.at(s, l)) * a.at(as ? 0 : s, l)));
       break;
     }
-    case GLSLstd450IMix: map3([](double x, double y, double a) { return a != 0 ? y : x; }); break;
+    case GLSLstd450IMix: map3([](Real x, Real y, Real a) { return a != 0 ? y : x; }); break;
     case GLSLstd450Step: {
       const Src edge = arg(0), x = arg(1);
       const bool es = scalar_arg(0);
@@ -183,14 +189,14 @@ TwinResult<void> Executor::execute_ext(uint32_t index, const Lanes& lanes) {
       const bool s0 = scalar_arg(0), s1 = scalar_arg(1);
       for (uint32_t s = 0; s < n; ++s)
         for (uint16_t l : lanes) {
-          const double a = e0.at(s0 ? 0 : s, l), b = e1.at(s1 ? 0 : s, l);
-          const double t = std::fmin(std::fmax(R(R(x.at(s, l) - a) / R(b - a)), 0.0), 1.0);
+          const Real a = e0.at(s0 ? 0 : s, l), b = e1.at(s1 ? 0 : s, l);
+          const Real t = std::fmin(std::fmax(R(R(x.at(s, l) - a) / R(b - a)), 0.0), 1.0);
           d[s * L + l] = R(R(t * t) * R(3.0 - R(2.0 * t)));
         }
       break;
     }
-    case GLSLstd450Fma: map3([](double a, double b, double c) { return std::fma(a, b, c); }); break;
-    case GLSLstd450Ldexp: map2([](double x, double e) { return std::ldexp(x, int(std::clamp(e, -2000.0, 2000.0))); }); break;
+    case GLSLstd450Fma: map3([](Real a, Real b, Real c) { return std::fma(a, b, c); }); break;
+    case GLSLstd450Ldexp: map2([](Real x, Real e) { return std::ldexp(x, int(std::clamp<Real>(e, Real(-2000.0), Real(2000.0)))); }); break;
     case GLSLstd450Modf: case GLSLstd450Frexp: {
       // The second result goes through the pointer operand.
       const Src x = arg(0);
@@ -198,7 +204,7 @@ TwinResult<void> Executor::execute_ext(uint32_t index, const Lanes& lanes) {
       Memory& mem = memory_[p.variable];
       for (uint32_t s = 0; s < n; ++s)
         for (uint16_t l : lanes) {
-          double other = 0, first;
+          Real other = 0, first;
           if (op == GLSLstd450Modf) {
             first = R(std::modf(x.at(s, l), &other));
           } else {
@@ -217,7 +223,7 @@ TwinResult<void> Executor::execute_ext(uint32_t index, const Lanes& lanes) {
       const uint32_t half = n / 2;
       for (uint32_t s = 0; s < half; ++s)
         for (uint16_t l : lanes) {
-          double other = 0, first;
+          Real other = 0, first;
           if (op == GLSLstd450ModfStruct) {
             first = std::modf(x.at(s, l), &other);
           } else {
@@ -234,9 +240,9 @@ TwinResult<void> Executor::execute_ext(uint32_t index, const Lanes& lanes) {
       const Src a = arg(0);
       const uint32_t count = slots_of(ops[0]);
       for (uint16_t l : lanes) {
-        double sum = 0;
+        Real sum = 0;
         for (uint32_t s = 0; s < count; ++s) {
-          const double v = op == GLSLstd450Distance ? R(a.at(s, l) - arg(1).at(s, l)) : a.at(s, l);
+          const Real v = op == GLSLstd450Distance ? R(a.at(s, l) - arg(1).at(s, l)) : a.at(s, l);
           sum = s == 0 ? R(v * v) : R(sum + R(v * v));
         }
         d[l] = R(std::sqrt(sum));
@@ -255,7 +261,7 @@ TwinResult<void> Executor::execute_ext(uint32_t index, const Lanes& lanes) {
     case GLSLstd450Normalize: {   // v * inversesqrt(dot(v, v)), as Mesa lowers it
       const Src a = arg(0);
       for (uint16_t l : lanes) {
-        const double scale = R(1.0 / std::sqrt(dot(a, a, n, l)));
+        const Real scale = R(1.0 / std::sqrt(dot(a, a, n, l)));
         for (uint32_t s = 0; s < n; ++s) d[s * L + l] = R(a.at(s, l) * scale);
       }
       break;
@@ -271,7 +277,7 @@ TwinResult<void> Executor::execute_ext(uint32_t index, const Lanes& lanes) {
     case GLSLstd450Reflect: {   // I - 2 * dot(N, I) * N
       const Src I = arg(0), N = arg(1);
       for (uint16_t l : lanes) {
-        const double k = R(2.0 * dot(N, I, n, l));
+        const Real k = R(2.0 * dot(N, I, n, l));
         for (uint32_t s = 0; s < n; ++s) d[s * L + l] = R(I.at(s, l) - R(k * N.at(s, l)));
       }
       break;
@@ -279,9 +285,9 @@ TwinResult<void> Executor::execute_ext(uint32_t index, const Lanes& lanes) {
     case GLSLstd450Refract: {
       const Src I = arg(0), N = arg(1), eta_arg = arg(2);
       for (uint16_t l : lanes) {
-        const double eta = eta_arg.at(0, l);
-        const double ni = dot(N, I, n, l);
-        const double k = R(1.0 - R(R(eta * eta) * R(1.0 - R(ni * ni))));
+        const Real eta = eta_arg.at(0, l);
+        const Real ni = dot(N, I, n, l);
+        const Real k = R(1.0 - R(R(eta * eta) * R(1.0 - R(ni * ni))));
         for (uint32_t s = 0; s < n; ++s)
           d[s * L + l] = k < 0 ? 0.0 : R(R(eta * I.at(s, l)) - R(R(R(eta * ni) + R(std::sqrt(k))) * N.at(s, l)));
       }
@@ -290,55 +296,55 @@ TwinResult<void> Executor::execute_ext(uint32_t index, const Lanes& lanes) {
     case GLSLstd450Determinant: case GLSLstd450MatrixInverse: {
       const Src a = arg(0);
       const int size = int(m_.types[m_.type_of[ops[0]]].count);
-      std::vector<double> matrix(size_t(size) * size);
+      std::vector<Real> matrix(size_t(size) * size);
       for (uint16_t l : lanes) {
         for (int s = 0; s < size * size; ++s) matrix[s] = a.at(uint32_t(s), l);
         if (op == GLSLstd450Determinant) {
           d[l] = R(determinant(matrix, size));
         } else {
-          const std::vector<double> inv = inverse(matrix, size);
+          const std::vector<Real> inv = inverse(matrix, size);
           for (int s = 0; s < size * size; ++s) d[size_t(s) * L + l] = R(inv[s]);
         }
       }
       break;
     }
     case GLSLstd450FindILsb:
-      integer([](double x) { const auto v = uint32_t(int64_t(x)); return v == 0 ? -1.0 : double(__builtin_ctz(v)); });
+      integer([](Real x) { const auto v = uint32_t(int64_t(x)); return v == 0 ? -1.0 : Real(__builtin_ctz(v)); });
       break;
     case GLSLstd450FindUMsb:
-      integer([](double x) { const auto v = uint32_t(int64_t(x)); return v == 0 ? -1.0 : double(31 - __builtin_clz(v)); });
+      integer([](Real x) { const auto v = uint32_t(int64_t(x)); return v == 0 ? -1.0 : Real(31 - __builtin_clz(v)); });
       break;
     case GLSLstd450FindSMsb:
-      integer([](double x) {
+      integer([](Real x) {
         auto v = uint32_t(int32_t(int64_t(x)));
         if (int32_t(v) < 0) v = ~v;
-        return v == 0 ? -1.0 : double(31 - __builtin_clz(v));
+        return v == 0 ? -1.0 : Real(31 - __builtin_clz(v));
       });
       break;
     case GLSLstd450PackHalf2x16: {
       const Src a = arg(0);
-      auto half_bits = [](double x) -> uint32_t {
-        const double h = round_to_half(x);
+      auto half_bits = [](Real x) -> uint32_t {
+        const Real h = round_to_half(x);
         if (std::isnan(h)) return 0x7e00;
         const uint32_t sign = std::signbit(h) ? 0x8000 : 0;
-        const double m = std::fabs(h);
+        const Real m = std::fabs(h);
         if (std::isinf(m)) return sign | 0x7c00;
         if (m == 0) return sign;
         int e = 0;
-        const double f = std::frexp(m, &e);   // m = f * 2^e, f in [0.5, 1)
+        const Real f = std::frexp(m, &e);   // m = f * 2^e, f in [0.5, 1)
         if (e - 1 < -14) return sign | uint32_t(std::ldexp(m, 24));   // subnormal
         return sign | uint32_t((e - 1 + 15) << 10) | (uint32_t(std::ldexp(f, 11)) & 0x3ff);
       };
-      for (uint16_t l : lanes) d[l] = double(half_bits(a.at(0, l)) | (half_bits(a.at(1, l)) << 16));
+      for (uint16_t l : lanes) d[l] = Real(half_bits(a.at(0, l)) | (half_bits(a.at(1, l)) << 16));
       break;
     }
     case GLSLstd450UnpackHalf2x16: {
       const Src a = arg(0);
       auto from_half = [](uint32_t h) {
         const int exponent = int((h >> 10) & 0x1f);
-        const double mantissa = double(h & 0x3ff);
-        const double v = exponent == 0 ? std::ldexp(mantissa, -24)
-                         : exponent == 31 ? (mantissa != 0 ? nan_value : INFINITY)
+        const Real mantissa = Real(h & 0x3ff);
+        const Real v = exponent == 0 ? std::ldexp(mantissa, -24)
+                         : exponent == 31 ? (mantissa != 0 ? nan_value<Real> : INFINITY)
                                           : std::ldexp(1024.0 + mantissa, exponent - 25);
         return (h & 0x8000) ? -v : v;
       };
@@ -355,8 +361,8 @@ TwinResult<void> Executor::execute_ext(uint32_t index, const Lanes& lanes) {
       for (uint16_t l : lanes) {
         uint32_t packed = 0;
         for (uint32_t s = 0; s < 4; ++s) {
-          const double v = snorm ? std::round(std::clamp(a.at(s, l), -1.0, 1.0) * 127.0)
-                                  : std::round(std::clamp(a.at(s, l), 0.0, 1.0) * 255.0);
+          const Real v = snorm ? std::round(std::clamp<Real>(a.at(s, l), Real(-1.0), Real(1.0)) * 127.0)
+                                  : std::round(std::clamp<Real>(a.at(s, l), Real(0.0), Real(1.0)) * 255.0);
           packed |= (uint32_t(int32_t(v)) & 0xff) << (8 * s);
         }
         d[l] = packed;
@@ -370,7 +376,7 @@ TwinResult<void> Executor::execute_ext(uint32_t index, const Lanes& lanes) {
         const auto bits = uint32_t(int64_t(a.at(0, l)));
         for (uint32_t s = 0; s < 4; ++s) {
           const uint32_t byte = (bits >> (8 * s)) & 0xff;
-          d[s * L + l] = R(snorm ? std::clamp(double(int8_t(byte)) / 127.0, -1.0, 1.0) : byte / 255.0);
+          d[s * L + l] = R(snorm ? std::clamp<Real>(Real(int8_t(byte)) / 127.0, Real(-1.0), Real(1.0)) : byte / 255.0);
         }
       }
       break;
@@ -381,8 +387,8 @@ TwinResult<void> Executor::execute_ext(uint32_t index, const Lanes& lanes) {
       for (uint16_t l : lanes) {
         uint32_t packed = 0;
         for (uint32_t s = 0; s < 2; ++s) {
-          const double v = snorm ? std::round(std::clamp(a.at(s, l), -1.0, 1.0) * 32767.0)
-                                  : std::round(std::clamp(a.at(s, l), 0.0, 1.0) * 65535.0);
+          const Real v = snorm ? std::round(std::clamp<Real>(a.at(s, l), Real(-1.0), Real(1.0)) * 32767.0)
+                                  : std::round(std::clamp<Real>(a.at(s, l), Real(0.0), Real(1.0)) * 65535.0);
           packed |= (uint32_t(int32_t(v)) & 0xffff) << (16 * s);
         }
         d[l] = packed;
@@ -396,7 +402,7 @@ TwinResult<void> Executor::execute_ext(uint32_t index, const Lanes& lanes) {
         const auto bits = uint32_t(int64_t(a.at(0, l)));
         for (uint32_t s = 0; s < 2; ++s) {
           const uint32_t word = (bits >> (16 * s)) & 0xffff;
-          d[s * L + l] = R(snorm ? std::clamp(double(int16_t(word)) / 32767.0, -1.0, 1.0) : word / 65535.0);
+          d[s * L + l] = R(snorm ? std::clamp<Real>(Real(int16_t(word)) / 32767.0, Real(-1.0), Real(1.0)) : word / 65535.0);
         }
       }
       break;
@@ -406,5 +412,8 @@ TwinResult<void> Executor::execute_ext(uint32_t index, const Lanes& lanes) {
   }
   return {};
 }
+
+template TwinResult<void> BasicExecutor<double>::execute_ext(uint32_t, const Lanes&);
+template TwinResult<void> BasicExecutor<long double>::execute_ext(uint32_t, const Lanes&);
 
 }  // namespace twin

@@ -95,22 +95,25 @@ std::vector<Interface> interface_of(const Module& m, spv::StorageClass storage) 
   return out;
 }
 
+template <typename Real>
 struct VertexResults {
-  std::vector<glm::dvec4> clip;
-  std::vector<double> varyings;   // vertex * max_locations * 4 + location * 4 + component
+  std::vector<glm::dvec4> clip;   // the rasteriser's input, in double
+  std::vector<Real> varyings;     // vertex * max_locations * 4 + location * 4 + component
   // gl_ClipDistance and gl_CullDistance: vertex * planes + plane (no planes when not declared).
   uint32_t clip_planes = 0, cull_planes = 0;
   std::vector<double> clip_distances, cull_distances;
 };
 
-double stage_round(Precision p, double x) { return p == Precision::exact ? x : round_to_float(x); }
+template <typename Real>
+Real stage_round(Precision p, Real x) { return p == Precision::exact ? x : Real(round_to_float(double(x))); }
 
-TwinResult<VertexResults> run_vertices(const DrawInput& input) {
+template <typename Real>
+TwinResult<VertexResults<Real>> run_vertices(const DrawInput& input) {
   const Module& m = *input.program.vertex;
-  Executor executor(m, input.resources, input.precision);
+  BasicExecutor<Real> executor(m, input.resources, input.precision);
   const auto inputs = interface_of(m, spv::StorageClass::Input);
   const auto outputs = interface_of(m, spv::StorageClass::Output);
-  VertexResults results;
+  VertexResults<Real> results;
   results.clip.assign(input.vertex_count, glm::dvec4(0.0));
   results.varyings.assign(size_t(input.vertex_count) * max_locations * 4, 0.0);
   bool has_position = false;
@@ -118,7 +121,7 @@ TwinResult<VertexResults> run_vertices(const DrawInput& input) {
     const uint32_t n = std::min(batch_lanes, input.vertex_count - first);
     if (auto ok = executor.begin(n, false); !ok) return std::unexpected(ok.error());
     for (const Interface& i : inputs) {
-      double* slots = executor.input(i.variable);
+      Real* slots = executor.input(i.variable);
       if (i.builtin == int(spv::BuiltIn::VertexIndex) || i.builtin == int(spv::BuiltIn::VertexId)) {
         for (uint32_t l = 0; l < n; ++l) slots[l] = first + l;
         continue;
@@ -143,12 +146,12 @@ TwinResult<VertexResults> run_vertices(const DrawInput& input) {
     }
     if (auto ok = executor.run(); !ok) return std::unexpected(ok.error());
     for (const Interface& o : outputs) {
-      const double* slots = executor.output(o.variable);
+      const Real* slots = executor.output(o.variable);
       auto position_at = [&](uint32_t slot) {
         has_position = true;
         for (uint32_t l = 0; l < n; ++l)
-          results.clip[first + l] = {slots[slot * n + l], slots[(slot + 1) * n + l], slots[(slot + 2) * n + l],
-                                     slots[(slot + 3) * n + l]};
+          results.clip[first + l] = {double(slots[slot * n + l]), double(slots[(slot + 1) * n + l]),
+                                     double(slots[(slot + 2) * n + l]), double(slots[(slot + 3) * n + l])};
       };
       auto distances_at = [&](int builtin, uint32_t slot, uint32_t count) {
         const bool clip = builtin == int(spv::BuiltIn::ClipDistance);
@@ -215,9 +218,10 @@ struct FragmentLane {
   bool helper = false;       // the pixel belongs to another triangle, or to none
 };
 
+template <typename Real>
 class FragmentStage {
  public:
-  FragmentStage(const DrawInput& input, const VertexResults& vertices, std::span<const uint32_t> indices,
+  FragmentStage(const DrawInput& input, const VertexResults<Real>& vertices, std::span<const uint32_t> indices,
                 const reference::VisibilityBuffer& visibility)
       : input_(input),
         m_(*input.program.fragment),
@@ -260,20 +264,20 @@ class FragmentStage {
   }
 
   // Runs a batch and writes its covered, kept lanes into `image`.
-  TwinResult<void> run(Executor& executor, const std::vector<FragmentLane>& lanes, TwinImage* image) const {
+  TwinResult<void> run(BasicExecutor<Real>& executor, const std::vector<FragmentLane>& lanes, TwinImage* image) const {
     const auto n = uint32_t(lanes.size());
     if (auto ok = executor.begin(n, true); !ok) return ok;
     for (const Interface& i : inputs_)
       if (auto ok = fill(executor, i, lanes); !ok) return ok;
     if (auto ok = executor.run(); !ok) return ok;
     if (!image || !colour_) return {};
-    const double* colour = executor.output(colour_);
+    const Real* colour = executor.output(colour_);
     for (uint32_t l = 0; l < n; ++l) {
       if (lanes[l].helper || executor.discarded(l)) continue;
       const size_t pixel = size_t(lanes[l].y) * image->width + lanes[l].x;
       double rgba[4] = {0, 0, 0, 1};
       for (uint32_t k = 0; k < colour_leaf_.count && colour_leaf_.component + k < 4; ++k)
-        rgba[colour_leaf_.component + k] = colour[(colour_leaf_.slot + k) * n + l];
+        rgba[colour_leaf_.component + k] = double(colour[(colour_leaf_.slot + k) * n + l]);
       std::copy(rgba, rgba + 4, image->rgba.begin() + std::ptrdiff_t(pixel * 4));
       image->coverage[pixel] = 1;
     }
@@ -313,9 +317,9 @@ class FragmentStage {
     return twin::front_facing(vertices_.clip[c[0]], vertices_.clip[c[1]], vertices_.clip[c[2]]);
   }
 
-  TwinResult<void> fill(Executor& executor, const Interface& i, const std::vector<FragmentLane>& lanes) const {
+  TwinResult<void> fill(BasicExecutor<Real>& executor, const Interface& i, const std::vector<FragmentLane>& lanes) const {
     const auto n = uint32_t(lanes.size());
-    double* slots = executor.input(i.variable);
+    Real* slots = executor.input(i.variable);
     const Precision precision = input_.precision;
     if (i.builtin >= 0) {
       switch (spv::BuiltIn(i.builtin)) {
@@ -330,8 +334,8 @@ class FragmentStage {
             const double y = m_.origin_lower_left ? input_.height - lanes[l].y - 0.5 : lanes[l].y + 0.5;
             slots[0 * n + l] = lanes[l].x + 0.5;
             slots[1 * n + l] = y;
-            slots[2 * n + l] = stage_round(precision, z / w);
-            slots[3 * n + l] = stage_round(precision, 1.0 / w);
+            slots[2 * n + l] = stage_round(precision, Real(z / w));
+            slots[3 * n + l] = stage_round(precision, Real(1.0 / w));
           }
           return {};
         case spv::BuiltIn::FrontFacing:
@@ -361,7 +365,8 @@ class FragmentStage {
           auto value = [&](int corner) {
             return vertices_.varyings[(size_t(c[size_t(corner)]) * max_locations + leaf.location) * 4 + leaf.component + k];
           };
-          const double v = leaf.interpolation.flat ? value(0) : b.x * value(0) + b.y * value(1) + b.z * value(2);
+          const Real v = leaf.interpolation.flat ? value(0)
+                                                 : Real(b.x) * value(0) + Real(b.y) * value(1) + Real(b.z) * value(2);
           slots[(leaf.slot + k) * n + l] = stage_round(precision, v);
         }
       }
@@ -371,7 +376,7 @@ class FragmentStage {
 
   const DrawInput& input_;
   const Module& m_;
-  const VertexResults& vertices_;
+  const VertexResults<Real>& vertices_;
   std::span<const uint32_t> indices_;   // the drawn triangles (culled ones left out)
   const reference::VisibilityBuffer& visibility_;
   std::vector<Interface> inputs_;
@@ -379,20 +384,22 @@ class FragmentStage {
   Leaf colour_leaf_;
 };
 
+template <typename Real>
 struct Prepared {
-  VertexResults vertices;
+  VertexResults<Real> vertices;
   std::vector<uint32_t> indices;   // the triangles left after culling
   reference::VisibilityBuffer visibility;
 };
 
-TwinResult<Prepared> prepare(const DrawInput& input) {
+template <typename Real>
+TwinResult<Prepared<Real>> prepare(const DrawInput& input) {
   if (input.width <= 0 || input.height <= 0)
     return std::unexpected(TwinError{.message = "image size " + std::to_string(input.width) + "x" +
                                                 std::to_string(input.height) + " is empty"});
   if (input.indices.size() % 3 != 0) return std::unexpected(TwinError{.message = "the index list is not triangles"});
   for (uint32_t index : input.indices)
     if (index >= input.vertex_count) return std::unexpected(TwinError{.message = "a vertex index is out of range"});
-  auto vertices = run_vertices(input);
+  auto vertices = run_vertices<Real>(input);
   if (!vertices) return std::unexpected(vertices.error());
   std::vector<uint32_t> indices;
   indices.reserve(input.indices.size());
@@ -413,7 +420,7 @@ TwinResult<Prepared> prepare(const DrawInput& input) {
     indices.insert(indices.end(), input.indices.begin() + std::ptrdiff_t(first), input.indices.begin() + std::ptrdiff_t(first + 3));
   }
   auto visibility = reference::rasterise(vertices->clip, indices, input.width, input.height);
-  return Prepared{std::move(*vertices), std::move(indices), std::move(visibility)};
+  return Prepared<Real>{std::move(*vertices), std::move(indices), std::move(visibility)};
 }
 
 }  // namespace
@@ -428,11 +435,11 @@ TwinResult<Program> load_program(std::span<const uint32_t> vertex_spirv, const s
 }
 
 TwinResult<TwinImage> draw(const DrawInput& input) {
-  auto prepared = prepare(input);
+  auto prepared = prepare<double>(input);
   if (!prepared) return std::unexpected(prepared.error());
   TwinImage image{input.width, input.height, std::vector<double>(size_t(input.width) * input.height * 4, 0.0),
                   std::vector<uint8_t>(size_t(input.width) * input.height, 0)};
-  const FragmentStage stage(input, prepared->vertices, prepared->indices, prepared->visibility);
+  const FragmentStage<double> stage(input, prepared->vertices, prepared->indices, prepared->visibility);
   const int quad_rows = (input.height + 1) / 2;
   const unsigned threads = std::max(1u, std::min<unsigned>(input.threads ? input.threads : std::thread::hardware_concurrency(),
                                                            unsigned(quad_rows)));
@@ -474,21 +481,46 @@ TwinResult<TwinImage> draw(const DrawInput& input) {
   return image;
 }
 
-TwinResult<void> trace_pixel(const DrawInput& input, int x, int y, Observer& observer) {
-  auto prepared = prepare(input);
+namespace {
+
+// The fragment stage for pixel (x, y) alone (its quad, its triangle), in `Real`: reported
+// to `observer`, and written into `image` when given.
+template <typename Real>
+TwinResult<void> run_pixel(const DrawInput& input, int x, int y, Observer* observer, TwinImage* image) {
+  auto prepared = prepare<Real>(input);
   if (!prepared) return std::unexpected(prepared.error());
   if (x < 0 || y < 0 || x >= input.width || y >= input.height || !prepared->visibility.at(x, y).covered())
     return std::unexpected(TwinError{.message = "pixel " + std::to_string(x) + "," + std::to_string(y) + " is not covered"});
-  const FragmentStage stage(input, prepared->vertices, prepared->indices, prepared->visibility);
+  const FragmentStage<Real> stage(input, prepared->vertices, prepared->indices, prepared->visibility);
   std::vector<FragmentLane> lanes;
   stage.quad_lanes(x & ~1, y & ~1, lanes);
   const uint32_t triangle = prepared->visibility.at(x, y).triangle;
+  std::vector<FragmentLane> mine;   // only this triangle's quad
   uint32_t lane = 0;
-  for (uint32_t l = 0; l < lanes.size(); ++l)
-    if (lanes[l].x == x && lanes[l].y == y && lanes[l].triangle == triangle) lane = l;
-  Executor executor(stage.module(), input.resources, input.precision);
-  executor.observe(&observer, lane);
-  return stage.run(executor, lanes, nullptr);
+  for (const FragmentLane& l : lanes)
+    if (l.triangle == triangle) {
+      if (l.x == x && l.y == y) lane = uint32_t(mine.size());
+      mine.push_back(l);
+    }
+  BasicExecutor<Real> executor(stage.module(), input.resources, input.precision);
+  if (observer) executor.observe(observer, lane);
+  return stage.run(executor, mine, image);
+}
+
+}  // namespace
+
+TwinResult<void> trace_pixel(const DrawInput& input, int x, int y, Observer& observer) {
+  return run_pixel<double>(input, x, y, &observer, nullptr);
+}
+
+TwinResult<std::array<double, 4>> wide_pixel(const DrawInput& input, int x, int y) {
+  DrawInput wide = input;
+  wide.precision = Precision::exact;
+  TwinImage image{input.width, input.height, std::vector<double>(size_t(input.width) * input.height * 4, 0.0),
+                  std::vector<uint8_t>(size_t(input.width) * input.height, 0)};
+  if (auto ok = run_pixel<long double>(wide, x, y, nullptr, &image); !ok) return std::unexpected(ok.error());
+  const size_t at = (size_t(y) * input.width + x) * 4;
+  return std::array<double, 4>{image.rgba[at], image.rgba[at + 1], image.rgba[at + 2], image.rgba[at + 3]};
 }
 
 }  // namespace twin

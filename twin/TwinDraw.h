@@ -6,6 +6,7 @@
 // in 2x2 quads, on every core. Vulkan's conventions throughout: the image's row 0 is at
 // the top, gl_FragCoord's origin is the top-left corner, front faces are clockwise on
 // screen as the Vulkan backend's pipeline sets them.
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -61,5 +62,10 @@ TwinResult<TwinImage> draw(const DrawInput& input);
 // quad), every value it computes reported to `observer`. An error when the pixel is not
 // covered.
 TwinResult<void> trace_pixel(const DrawInput& input, int x, int y, Observer& observer);
+
+// Pixel (x, y)'s colour with both stages computed in long double (a 64-bit significand,
+// 11 bits more than double) whatever the input's precision: the double twin's own error at
+// that pixel is its difference from this (the result is rounded to double, 1.1e-16 of it).
+TwinResult<std::array<double, 4>> wide_pixel(const DrawInput& input, int x, int y);
 
 }  // namespace twin

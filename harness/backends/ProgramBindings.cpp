@@ -54,7 +54,8 @@ std::string where(const SamplerBinding& sampler) {
          ", binding " + std::to_string(sampler.binding) + ")";
 }
 
-Error bindings_error(std::string message) { return Error{.message = std::move(message), .stage = ErrorStage::backend}; }
+// No stage: the backend that binds says it is its own (Error::in_stage).
+Error bindings_error(std::string message) { return Error{.message = std::move(message)}; }
 
 }  // namespace
 

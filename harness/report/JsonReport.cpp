@@ -95,6 +95,7 @@ ojson cell_json(const CellResult& r) {
                     {"share", json_number(r.twin->share)},
                     {"worst_pixel", {r.twin->worst_x, r.twin->worst_y}},
                     {"reference_max_abs", json_number(r.twin->reference_max_abs)},
+                    {"self_error", json_number(r.twin->self_error)},
                     {"ms", json_number(r.twin->ms)},
                     {"precision_note", r.twin->precision_note},
                     {"nonfinite_origin", r.twin->nonfinite_origin},
@@ -333,6 +334,7 @@ CellResult read_cell(const json& c, const std::string& p) {
       f.worst_y = (*w)[1].get<int>();
     }
     read(*t, "reference_max_abs", tp, f.reference_max_abs);
+    read(*t, "self_error", tp, f.self_error);
     read(*t, "ms", tp, f.ms);
     read(*t, "precision_note", tp, f.precision_note);
     read(*t, "nonfinite_origin", tp, f.nonfinite_origin);

@@ -160,6 +160,9 @@ struct CellResult {
     int worst_x = -1, worst_y = -1;   // where max_abs is (row 0 at the top)
     double share = 0;                 // largest |render - twin| / the cell's interior tolerance there
     double reference_max_abs = -1;    // twin vs the cell's reference over its interior (-1: none)
+    // The double twin's own error at the worst pixel: its colour against both stages run
+    // again there in long double (-1: not checked, i.e. not a double twin).
+    double self_error = -1;
     double ms = 0;                    // the twin's draw, every core
     std::string precision_note;       // --twin half, beyond the tolerance: which lines are reduced
     std::string nonfinite_origin;     // a non-finite pixel: the instruction that first made NaN/Inf

@@ -102,6 +102,19 @@ CellResult::TwinFigures CellTwins::figures(GroupDrawer& drawer, const Variant& v
     drawn_.erase(key);
     return twin_of(drawer, variant, cell, row).image.has_value();
   };
+  // The double twin checked against itself in long double where the render is furthest
+  // from it, once per twin image (every cell of a variant and language shares it).
+  if (precision_ == "double" && own.worst_x >= 0) {
+    auto& checked = self_errors_[key];
+    if (!checked && retrace())
+      if (auto wide = renderer_->wide_pixel(own.worst_x, own.worst_y)) {
+        const size_t at = (size_t(own.worst_y) * twin_image.width + own.worst_x) * 4;
+        double e = 0;
+        for (int c = 0; c < 3; ++c) e = std::max(e, std::abs(twin_image.rgba[at + c] - (*wide)[size_t(c)]));
+        checked = e;
+      }
+    if (checked) f.self_error = *checked;
+  }
   if (auto pixel = first_nonfinite_pixel(render); pixel && retrace()) {
     auto origin = renderer_->nonfinite_origin(pixel->first, pixel->second);
     if (!origin) f.nonfinite_origin = "the twin could not trace pixel " + fmt::format("({}, {})", pixel->first, pixel->second) +

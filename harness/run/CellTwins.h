@@ -28,7 +28,10 @@ class CellTwins {
  public:
   explicit CellTwins(const std::string& precision);   // "" = off
   bool enabled() const { return renderer_ != nullptr; }
-  void begin_group() { drawn_.clear(); }
+  void begin_group() {
+    drawn_.clear();
+    self_errors_.clear();
+  }
   // `row`: the cell's result so far (its identity names the twin's draw steps);
   // `reference`: the image the cell is judged against, null when it has none.
   CellResult::TwinFigures figures(GroupDrawer& drawer, const Variant& variant, const PlannedCell& cell,
@@ -45,6 +48,7 @@ class CellTwins {
   BackendSlot slot_;
   TwinRenderer* renderer_ = nullptr;
   std::map<std::pair<const Variant*, Language>, Drawn> drawn_;
+  std::map<std::pair<const Variant*, Language>, std::optional<double>> self_errors_;   // the double twin's own, per image
   std::optional<std::pair<const Variant*, Language>> last_drawn_;   // what the renderer's last draw is
 };
 

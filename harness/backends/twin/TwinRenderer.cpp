@@ -103,7 +103,7 @@ std::string TwinRenderer::driver_version() const { return "shaderbed twin " + st
 std::string TwinRenderer::device_name() const { return "SPIR-V interpreter on the CPU reference rasteriser"; }
 
 Result<RenderOutput> TwinRenderer::render(const DrawJob& job) {
-  const auto fail = [&](Error e) { return std::unexpected(std::move(e).in_backend(name_)); };
+  const auto fail = [&](Error e) { return std::unexpected(std::move(e).in_stage(ErrorStage::twin).in_backend(name_)); };
   if (job.path != ShaderPath::spirv)
     return fail(Error{.message = "the twin runs SPIR-V only", .stage = ErrorStage::twin});
   // Culling is modelled; depth, blending and fill other than shaderbed's defaults are not.
@@ -230,6 +230,13 @@ Result<std::optional<twin::ValueOrigin>> TwinRenderer::nonfinite_origin(int x, i
   auto origin = twin::first_nonfinite(last_->input(precision_, 1), x, y);
   if (!origin) return std::unexpected(twin_error(origin.error()));
   return *origin;
+}
+
+Result<std::array<double, 4>> TwinRenderer::wide_pixel(int x, int y) const {
+  if (!last_) return std::unexpected(Error{.message = "the twin has drawn nothing yet", .stage = ErrorStage::twin});
+  auto pixel = twin::wide_pixel(last_->input(precision_, 1), x, y);
+  if (!pixel) return std::unexpected(twin_error(pixel.error()));
+  return *pixel;
 }
 
 const twin::Program* TwinRenderer::last_program() const { return last_ ? &last_->program : nullptr; }

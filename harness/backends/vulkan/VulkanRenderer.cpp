@@ -167,7 +167,7 @@ Result<RenderTarget*> VulkanRenderer::target_for(VkExtent2D extent) {
 // Every error names the backend, as the GL renderer's do, whichever layer raised it.
 Result<RenderOutput> VulkanRenderer::render(const DrawJob& job) {
   auto output = render_unlabelled(job);
-  if (!output) return std::unexpected(std::move(output.error()).in_backend("vulkan"));
+  if (!output) return std::unexpected(std::move(output.error()).in_stage(ErrorStage::vulkan).in_backend("vulkan"));
   return output;
 }
 
