@@ -9,6 +9,46 @@
 #include <limits>
 
 namespace twin {
+
+// Unqualified math: std's for double, Boost's for WideReal (WideReal.h).
+using std::sin;
+using std::cos;
+using std::tan;
+using std::asin;
+using std::acos;
+using std::atan;
+using std::sinh;
+using std::cosh;
+using std::tanh;
+using std::asinh;
+using std::acosh;
+using std::atanh;
+using std::atan2;
+using std::pow;
+using std::exp;
+using std::log;
+using std::exp2;
+using std::log2;
+using std::sqrt;
+using std::fabs;
+using std::floor;
+using std::ceil;
+using std::trunc;
+using std::round;
+using std::nearbyint;
+using std::fmod;
+using std::fmin;
+using std::fmax;
+using std::fma;
+using std::ldexp;
+using std::frexp;
+using std::modf;
+using std::isnan;
+using std::isinf;
+using std::isfinite;
+using std::signbit;
+using std::abs;
+using std::copysign;
 namespace {
 
 using spv::Op;
@@ -29,7 +69,9 @@ double wrap_integer(const Type& t, int64_t x) {
   return t.is_signed ? double(int32_t(uint32_t(uint64_t(x)))) : double(uint32_t(uint64_t(x)));
 }
 
-int64_t as_integer(double x) {
+template <typename T>
+int64_t as_integer(T value) {
+  const double x = double(value);
   if (!(x == x)) return 0;
   if (x >= 9.2e18) return std::numeric_limits<int64_t>::max();
   if (x <= -9.2e18) return std::numeric_limits<int64_t>::min();
@@ -37,7 +79,9 @@ int64_t as_integer(double x) {
 }
 
 // Bits of a slot seen as the 32- or 64-bit type `t`.
-uint64_t bits_of(const Type& t, double x) {
+template <typename T>
+uint64_t bits_of(const Type& t, T value) {
+  const double x = double(value);
   if (t.kind == K::floating) {
     if (t.width == 64) return std::bit_cast<uint64_t>(x);
     return std::bit_cast<uint32_t>(float(x));
@@ -68,9 +112,11 @@ bool float_valued(const Module& m, uint32_t id) {
 }
 
 // Float -> integer conversion: GPUs saturate out-of-range values; NaN gives 0.
-double float_to_integer(const Type& t, double x) {
+template <typename T>
+double float_to_integer(const Type& t, T value) {
+  const double x = double(value);
   if (!(x == x)) return 0;
-  const double truncated = std::trunc(x);
+  const double truncated = trunc(x);
   if (t.is_signed) return std::clamp(truncated, -2147483648.0, 2147483647.0);
   return std::clamp(truncated, 0.0, 4294967295.0);
 }
@@ -528,7 +574,7 @@ TwinResult<void> BasicExecutor<Real>::execute_op(uint32_t index, Lanes& lanes) {
     const Src a = src(ops[0]);
     Real* d = dst(in.result);
     for (uint32_t s = 0; s < n; ++s)
-      for (uint16_t l : lanes) d[s * L + l] = round(index, f(a.at(s, l)));
+      for (uint16_t l : lanes) d[s * L + l] = rounded(index, f(a.at(s, l)));
   };
   // Component-wise on two operands; a scalar operand (one slot) applies to every component.
   auto binary = [&](auto f) {
@@ -536,7 +582,7 @@ TwinResult<void> BasicExecutor<Real>::execute_op(uint32_t index, Lanes& lanes) {
     const bool a_scalar = slots_of(ops[0]) == 1 && n > 1, b_scalar = slots_of(ops[1]) == 1 && n > 1;
     Real* d = dst(in.result);
     for (uint32_t s = 0; s < n; ++s)
-      for (uint16_t l : lanes) d[s * L + l] = round(index, f(a.at(a_scalar ? 0 : s, l), b.at(b_scalar ? 0 : s, l)));
+      for (uint16_t l : lanes) d[s * L + l] = rounded(index, f(a.at(a_scalar ? 0 : s, l), b.at(b_scalar ? 0 : s, l)));
   };
   // Integer and logical operations: no rounding, the result wrapped to its type.
   const Type& scalar_type = rt.kind == K::vector ? m_.types[rt.element] : rt;
@@ -637,7 +683,7 @@ TwinResult<void> BasicExecutor<Real>::execute_op(uint32_t index, Lanes& lanes) {
       }
       if (relaxed_load || rounding_[index])
         for (uint32_t s = 0; s < n; ++s)
-          for (uint16_t l : lanes) d[s * L + l] = relaxed_load ? round_to_half(d[s * L + l]) : round(index, d[s * L + l]);
+          for (uint16_t l : lanes) d[s * L + l] = relaxed_load ? Real(round_to_half(double(d[s * L + l]))) : rounded(index, d[s * L + l]);
       return {};
     }
     case Op::OpStore: {
@@ -651,7 +697,7 @@ TwinResult<void> BasicExecutor<Real>::execute_op(uint32_t index, Lanes& lanes) {
       for (uint32_t s = 0; s < count; ++s)
         for (uint16_t l : lanes) {
           const size_t at = (size_t(p.at(l)) + s) * L + l;
-          if (at < mem.slots.size()) mem.slots[at] = relaxed_store ? round_to_half(v.at(s, l)) : v.at(s, l);
+          if (at < mem.slots.size()) mem.slots[at] = relaxed_store ? Real(round_to_half(double(v.at(s, l)))) : v.at(s, l);
         }
       return {};
     }
@@ -791,15 +837,15 @@ TwinResult<void> BasicExecutor<Real>::execute_op(uint32_t index, Lanes& lanes) {
       binary([](Real x, Real y) { return x * y; });
       return {};
     case Op::OpFDiv: binary([](Real x, Real y) { return x / y; }); return {};
-    case Op::OpFRem: binary([](Real x, Real y) { return std::fmod(x, y); }); return {};
-    case Op::OpFMod: binary([](Real x, Real y) { return x - y * std::floor(x / y); }); return {};
+    case Op::OpFRem: binary([](Real x, Real y) { return fmod(x, y); }); return {};
+    case Op::OpFMod: binary([](Real x, Real y) { return x - y * floor(x / y); }); return {};
     case Op::OpDot: {
       const Src a = src(ops[0]), b = src(ops[1]);
       const uint32_t count = slots_of(ops[0]);
       Real* d = dst(in.result);
       for (uint16_t l : lanes) {
-        Real sum = round(index, a.at(0, l) * b.at(0, l));
-        for (uint32_t s = 1; s < count; ++s) sum = round(index, sum + round(index, a.at(s, l) * b.at(s, l)));
+        Real sum = rounded(index, a.at(0, l) * b.at(0, l));
+        for (uint32_t s = 1; s < count; ++s) sum = rounded(index, sum + rounded(index, a.at(s, l) * b.at(s, l)));
         d[l] = sum;
       }
       return {};
@@ -812,8 +858,8 @@ TwinResult<void> BasicExecutor<Real>::execute_op(uint32_t index, Lanes& lanes) {
       Real* d = dst(in.result);
       auto dot_into = [&](uint32_t slot, auto a_at, auto b_at, uint32_t terms) {
         for (uint16_t l : lanes) {
-          Real sum = round(index, a_at(0u, l) * b_at(0u, l));
-          for (uint32_t k = 1; k < terms; ++k) sum = round(index, sum + round(index, a_at(k, l) * b_at(k, l)));
+          Real sum = rounded(index, a_at(0u, l) * b_at(0u, l));
+          for (uint32_t k = 1; k < terms; ++k) sum = rounded(index, sum + rounded(index, a_at(k, l) * b_at(k, l)));
           d[slot * L + l] = sum;
         }
       };
@@ -837,7 +883,7 @@ TwinResult<void> BasicExecutor<Real>::execute_op(uint32_t index, Lanes& lanes) {
         const uint32_t rows = slots_of(ops[0]);
         for (uint32_t c = 0; c < rt.count; ++c)
           for (uint32_t r = 0; r < rows; ++r)
-            for (uint16_t l : lanes) d[(c * rows + r) * L + l] = round(index, a.at(r, l) * b.at(c, l));
+            for (uint16_t l : lanes) d[(c * rows + r) * L + l] = rounded(index, a.at(r, l) * b.at(c, l));
       }
       return {};
     }
@@ -929,7 +975,7 @@ TwinResult<void> BasicExecutor<Real>::execute_op(uint32_t index, Lanes& lanes) {
         for (uint16_t l : lanes) d[s * L + l] = wrap_integer(scalar_type, as_integer(a.at(s, l)));
       return {};
     }
-    case Op::OpQuantizeToF16: unary([](Real x) { return round_to_half(x); }); return {};
+    case Op::OpQuantizeToF16: unary([](Real x) { return Real(round_to_half(double(x))); }); return {};
     case Op::OpBitcast: {
       const Type& from_type = m_.types[m_.type_of[ops[0]]];
       const Type& from = from_type.kind == K::vector ? m_.types[from_type.element] : from_type;
@@ -976,7 +1022,7 @@ TwinResult<void> BasicExecutor<Real>::execute_op(uint32_t index, Lanes& lanes) {
       const Src a = src(ops[0]);
       Real* d = dst(in.result);
       for (uint32_t s = 0; s < n; ++s)
-        for (uint16_t l : lanes) d[s * L + l] = op == Op::OpIsNan ? std::isnan(a.at(s, l)) : std::isinf(a.at(s, l));
+        for (uint16_t l : lanes) d[s * L + l] = op == Op::OpIsNan ? isnan(a.at(s, l)) : isinf(a.at(s, l));
       return {};
     }
     case Op::OpAny: case Op::OpAll: {
@@ -1018,9 +1064,9 @@ TwinResult<void> BasicExecutor<Real>::execute_op(uint32_t index, Lanes& lanes) {
             continue;
           }
           const uint32_t q = l & ~3u, row = coarse ? 0 : (l & 2u), column = coarse ? 0 : (l & 1u);
-          const Real dx = round(index, a.at(s, q + row + 1) - a.at(s, q + row));
-          const Real dy = round(index, a.at(s, q + column + 2) - a.at(s, q + column));
-          d[s * L + l] = want_x ? dx : want_y ? dy : round(index, std::fabs(dx) + std::fabs(dy));
+          const Real dx = rounded(index, a.at(s, q + row + 1) - a.at(s, q + row));
+          const Real dy = rounded(index, a.at(s, q + column + 2) - a.at(s, q + column));
+          d[s * L + l] = want_x ? dx : want_y ? dy : rounded(index, fabs(dx) + fabs(dy));
         }
       return {};
     }
@@ -1040,6 +1086,6 @@ TwinResult<void> BasicExecutor<Real>::execute_op(uint32_t index, Lanes& lanes) {
 }
 
 template class BasicExecutor<double>;
-template class BasicExecutor<long double>;
+template class BasicExecutor<WideReal>;
 
 }  // namespace twin

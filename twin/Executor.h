@@ -16,6 +16,7 @@
 #include "twin/Module.h"
 #include "twin/Precision.h"
 #include "twin/TextureSampling.h"
+#include "twin/WideReal.h"
 
 namespace twin {
 
@@ -108,7 +109,7 @@ class BasicExecutor {
   Src src(uint32_t id) const;
   Real* dst(uint32_t id) { return &registers_[register_base_[id]]; }
   uint32_t slots_of(uint32_t id) const { return m_.types[m_.type_of[id]].slots; }
-  Real round(uint32_t instruction, Real x) const {
+  Real rounded(uint32_t instruction, Real x) const {
     const uint8_t kind = rounding_[instruction];
     return kind == 0 ? x : kind == 1 ? Real(round_to_float(double(x))) : Real(round_to_half(double(x)));
   }
@@ -134,11 +135,11 @@ class BasicExecutor {
   uint32_t register_slots_ = 0;           // per lane, over every register
 };
 
-// The twin in double (float and half round their results), and in long double (a 64-bit
-// significand) to check the double twin itself at chosen pixels.
+// The twin in double (float and half round their results), and in WideReal (WideReal.h)
+// to check the double twin itself at chosen pixels.
 using Executor = BasicExecutor<double>;
-using WideExecutor = BasicExecutor<long double>;
+using WideExecutor = BasicExecutor<WideReal>;
 extern template class BasicExecutor<double>;
-extern template class BasicExecutor<long double>;
+extern template class BasicExecutor<WideReal>;
 
 }  // namespace twin

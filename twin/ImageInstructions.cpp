@@ -11,6 +11,46 @@
 #include "twin/Executor.h"
 
 namespace twin {
+
+// Unqualified math: std's for double, Boost's for WideReal (WideReal.h).
+using std::sin;
+using std::cos;
+using std::tan;
+using std::asin;
+using std::acos;
+using std::atan;
+using std::sinh;
+using std::cosh;
+using std::tanh;
+using std::asinh;
+using std::acosh;
+using std::atanh;
+using std::atan2;
+using std::pow;
+using std::exp;
+using std::log;
+using std::exp2;
+using std::log2;
+using std::sqrt;
+using std::fabs;
+using std::floor;
+using std::ceil;
+using std::trunc;
+using std::round;
+using std::nearbyint;
+using std::fmod;
+using std::fmin;
+using std::fmax;
+using std::fma;
+using std::ldexp;
+using std::frexp;
+using std::modf;
+using std::isnan;
+using std::isinf;
+using std::isfinite;
+using std::signbit;
+using std::abs;
+using std::copysign;
 namespace {
 
 using spv::Op;
@@ -89,7 +129,7 @@ TwinResult<void> BasicExecutor<Real>::execute_image(uint32_t index, const Lanes&
         // Sampling works in double: the texels are floats.
         const Real q = projective ? coordinate.at(coordinates, lane) : Real(1);
         for (uint32_t k = 0; k < coordinates; ++k)
-          c[k] = double(projective ? round(index, coordinate.at(k, lane) / q) : coordinate.at(k, lane));
+          c[k] = double(projective ? rounded(index, coordinate.at(k, lane) / q) : coordinate.at(k, lane));
         return c;
       };
       for (uint16_t l : lanes) {
@@ -120,13 +160,13 @@ TwinResult<void> BasicExecutor<Real>::execute_image(uint32_t index, const Lanes&
         if (op == Op::OpImageQueryLod) {
           const double levels = level_count(*b.image);
           const double clamped = b.sampler.mip_filter == MipFilter::none ? 0.0 : std::clamp(lambda, 0.0, levels - 1);
-          d[l] = round(index, clamped);
-          d[L + l] = round(index, lambda);
+          d[l] = rounded(index, clamped);
+          d[L + l] = rounded(index, lambda);
           continue;
         }
         const std::array<double, 4> texel = sample(*b.image, b.sampler, coordinate_at(l), lambda);
         const uint32_t n = slots_of(in.result);
-        for (uint32_t s = 0; s < n && s < 4; ++s) d[s * L + l] = round(index, texel[s]);
+        for (uint32_t s = 0; s < n && s < 4; ++s) d[s * L + l] = rounded(index, texel[s]);
       }
       return {};
     }
@@ -142,7 +182,7 @@ TwinResult<void> BasicExecutor<Real>::execute_image(uint32_t index, const Lanes&
         for (uint32_t k = 0; k < coordinates; ++k) texel[k] = int(std::clamp(double(coordinate.at(k, l)), -1e9, 1e9));
         const auto value = fetch(*b.image, b.sampler.srgb, texel, lod ? int(double(lod->at(0, l))) : 0);
         const uint32_t n = slots_of(in.result);
-        for (uint32_t s = 0; s < n && s < 4; ++s) d[s * L + l] = round(index, value[s]);
+        for (uint32_t s = 0; s < n && s < 4; ++s) d[s * L + l] = rounded(index, value[s]);
       }
       return {};
     }
@@ -169,6 +209,6 @@ TwinResult<void> BasicExecutor<Real>::execute_image(uint32_t index, const Lanes&
 }
 
 template TwinResult<void> BasicExecutor<double>::execute_image(uint32_t, const Lanes&);
-template TwinResult<void> BasicExecutor<long double>::execute_image(uint32_t, const Lanes&);
+template TwinResult<void> BasicExecutor<WideReal>::execute_image(uint32_t, const Lanes&);
 
 }  // namespace twin

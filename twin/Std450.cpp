@@ -12,14 +12,54 @@
 #include "twin/Executor.h"
 
 namespace twin {
+
+// Unqualified math: std's for double, Boost's for WideReal (WideReal.h).
+using std::sin;
+using std::cos;
+using std::tan;
+using std::asin;
+using std::acos;
+using std::atan;
+using std::sinh;
+using std::cosh;
+using std::tanh;
+using std::asinh;
+using std::acosh;
+using std::atanh;
+using std::atan2;
+using std::pow;
+using std::exp;
+using std::log;
+using std::exp2;
+using std::log2;
+using std::sqrt;
+using std::fabs;
+using std::floor;
+using std::ceil;
+using std::trunc;
+using std::round;
+using std::nearbyint;
+using std::fmod;
+using std::fmin;
+using std::fmax;
+using std::fma;
+using std::ldexp;
+using std::frexp;
+using std::modf;
+using std::isnan;
+using std::isinf;
+using std::isfinite;
+using std::signbit;
+using std::abs;
+using std::copysign;
 namespace {
 
 template <typename T>
-constexpr T nan_value = std::numeric_limits<T>::quiet_NaN();
+T nan_value() { return std::numeric_limits<T>::quiet_NaN(); }
 
 // GPUs compute pow as exp2(y * log2(x)): undefined (NaN) for x < 0.
 template <typename T>
-T gpu_pow(T x, T y) { return x < 0 ? nan_value<T> : std::pow(x, y); }
+T gpu_pow(T x, T y) { return x < 0 ? nan_value<T>() : pow(x, y); }
 
 template <typename T>
 T determinant(std::vector<T> a, int n) {
@@ -28,7 +68,7 @@ T determinant(std::vector<T> a, int n) {
   for (int c = 0; c < n; ++c) {
     int pivot = c;
     for (int r = c + 1; r < n; ++r)
-      if (std::fabs(a[c * n + r]) > std::fabs(a[c * n + pivot])) pivot = r;
+      if (fabs(a[c * n + r]) > fabs(a[c * n + pivot])) pivot = r;
     if (a[c * n + pivot] == 0) return 0;
     if (pivot != c) {
       for (int k = 0; k < n; ++k) std::swap(a[k * n + c], a[k * n + pivot]);
@@ -52,7 +92,7 @@ std::vector<T> inverse(const std::vector<T>& m, int n) {
   for (int c = 0; c < n; ++c) {
     int pivot = c;
     for (int r = c + 1; r < n; ++r)
-      if (std::fabs(at(a, r, c)) > std::fabs(at(a, pivot, c))) pivot = r;
+      if (fabs(at(a, r, c)) > fabs(at(a, pivot, c))) pivot = r;
     for (int k = 0; k < n; ++k) {
       std::swap(at(a, c, k), at(a, pivot, k));
       std::swap(at(inv, c, k), at(inv, pivot, k));
@@ -88,7 +128,7 @@ TwinResult<void> BasicExecutor<Real>::execute_ext(uint32_t index, const Lanes& l
   const Type& rt = m_.types[in.result_type];
   const uint32_t n = rt.slots;
   Real* d = dst(in.result);
-  const auto R = [&](Real x) { return round(index, x); };
+  const auto R = [&](Real x) { return rounded(index, x); };
   auto arg = [&](size_t i) { return src(ops[i]); };
   auto scalar_arg = [&](size_t i) { return slots_of(ops[i]) == 1 && n > 1; };
   auto map1 = [&](auto f) {
@@ -120,50 +160,50 @@ TwinResult<void> BasicExecutor<Real>::execute_ext(uint32_t index, const Lanes& l
   };
 
   switch (op) {
-    case GLSLstd450Round: map1([](Real x) { return std::round(x); }); break;
-    case GLSLstd450RoundEven: map1([](Real x) { return std::nearbyint(x); }); break;
-    case GLSLstd450Trunc: map1([](Real x) { return std::trunc(x); }); break;
-    case GLSLstd450FAbs: map1([](Real x) { return std::fabs(x); }); break;
-    case GLSLstd450SAbs: integer([](Real x) { return std::fabs(x); }); break;
+    case GLSLstd450Round: map1([](Real x) { return round(x); }); break;
+    case GLSLstd450RoundEven: map1([](Real x) { return nearbyint(x); }); break;
+    case GLSLstd450Trunc: map1([](Real x) { return trunc(x); }); break;
+    case GLSLstd450FAbs: map1([](Real x) { return fabs(x); }); break;
+    case GLSLstd450SAbs: integer([](Real x) { return fabs(x); }); break;
     case GLSLstd450FSign: case GLSLstd450SSign:
       map1([](Real x) { return x > 0 ? 1.0 : x < 0 ? -1.0 : x; });
       break;
-    case GLSLstd450Floor: map1([](Real x) { return std::floor(x); }); break;
-    case GLSLstd450Ceil: map1([](Real x) { return std::ceil(x); }); break;
+    case GLSLstd450Floor: map1([](Real x) { return floor(x); }); break;
+    case GLSLstd450Ceil: map1([](Real x) { return ceil(x); }); break;
     case GLSLstd450Fract: {
       const Src a = arg(0);
       for (uint32_t s = 0; s < n; ++s)
-        for (uint16_t l : lanes) d[s * L + l] = R(a.at(s, l) - std::floor(a.at(s, l)));
+        for (uint16_t l : lanes) d[s * L + l] = R(a.at(s, l) - floor(a.at(s, l)));
       break;
     }
-    case GLSLstd450Radians: map1([](Real x) { return x * (std::numbers::pi_v<Real> / 180.0); }); break;
-    case GLSLstd450Degrees: map1([](Real x) { return x * (180.0 / std::numbers::pi_v<Real>); }); break;
-    case GLSLstd450Sin: map1([](Real x) { return std::sin(x); }); break;
-    case GLSLstd450Cos: map1([](Real x) { return std::cos(x); }); break;
-    case GLSLstd450Tan: map1([](Real x) { return std::tan(x); }); break;
-    case GLSLstd450Asin: map1([](Real x) { return std::asin(x); }); break;
-    case GLSLstd450Acos: map1([](Real x) { return std::acos(x); }); break;
-    case GLSLstd450Atan: map1([](Real x) { return std::atan(x); }); break;
-    case GLSLstd450Sinh: map1([](Real x) { return std::sinh(x); }); break;
-    case GLSLstd450Cosh: map1([](Real x) { return std::cosh(x); }); break;
-    case GLSLstd450Tanh: map1([](Real x) { return std::tanh(x); }); break;
-    case GLSLstd450Asinh: map1([](Real x) { return std::asinh(x); }); break;
-    case GLSLstd450Acosh: map1([](Real x) { return std::acosh(x); }); break;
-    case GLSLstd450Atanh: map1([](Real x) { return std::atanh(x); }); break;
-    case GLSLstd450Atan2: map2([](Real y, Real x) { return std::atan2(y, x); }); break;
+    case GLSLstd450Radians: map1([](Real x) { return x * (Real(acos(Real(-1))) / 180.0); }); break;
+    case GLSLstd450Degrees: map1([](Real x) { return x * (180.0 / Real(acos(Real(-1)))); }); break;
+    case GLSLstd450Sin: map1([](Real x) { return sin(x); }); break;
+    case GLSLstd450Cos: map1([](Real x) { return cos(x); }); break;
+    case GLSLstd450Tan: map1([](Real x) { return tan(x); }); break;
+    case GLSLstd450Asin: map1([](Real x) { return asin(x); }); break;
+    case GLSLstd450Acos: map1([](Real x) { return acos(x); }); break;
+    case GLSLstd450Atan: map1([](Real x) { return atan(x); }); break;
+    case GLSLstd450Sinh: map1([](Real x) { return sinh(x); }); break;
+    case GLSLstd450Cosh: map1([](Real x) { return cosh(x); }); break;
+    case GLSLstd450Tanh: map1([](Real x) { return tanh(x); }); break;
+    case GLSLstd450Asinh: map1([](Real x) { return asinh(x); }); break;
+    case GLSLstd450Acosh: map1([](Real x) { return acosh(x); }); break;
+    case GLSLstd450Atanh: map1([](Real x) { return atanh(x); }); break;
+    case GLSLstd450Atan2: map2([](Real y, Real x) { return atan2(y, x); }); break;
     case GLSLstd450Pow: map2([](Real x, Real y) { return gpu_pow(x, y); }); break;
-    case GLSLstd450Exp: map1([](Real x) { return std::exp(x); }); break;
-    case GLSLstd450Log: map1([](Real x) { return std::log(x); }); break;
-    case GLSLstd450Exp2: map1([](Real x) { return std::exp2(x); }); break;
-    case GLSLstd450Log2: map1([](Real x) { return std::log2(x); }); break;
-    case GLSLstd450Sqrt: map1([](Real x) { return std::sqrt(x); }); break;
-    case GLSLstd450InverseSqrt: map1([](Real x) { return 1.0 / std::sqrt(x); }); break;
-    case GLSLstd450FMin: case GLSLstd450NMin: map2([](Real x, Real y) { return std::fmin(x, y); }); break;
-    case GLSLstd450FMax: case GLSLstd450NMax: map2([](Real x, Real y) { return std::fmax(x, y); }); break;
+    case GLSLstd450Exp: map1([](Real x) { return exp(x); }); break;
+    case GLSLstd450Log: map1([](Real x) { return log(x); }); break;
+    case GLSLstd450Exp2: map1([](Real x) { return exp2(x); }); break;
+    case GLSLstd450Log2: map1([](Real x) { return log2(x); }); break;
+    case GLSLstd450Sqrt: map1([](Real x) { return sqrt(x); }); break;
+    case GLSLstd450InverseSqrt: map1([](Real x) { return 1.0 / sqrt(x); }); break;
+    case GLSLstd450FMin: case GLSLstd450NMin: map2([](Real x, Real y) { return fmin(x, y); }); break;
+    case GLSLstd450FMax: case GLSLstd450NMax: map2([](Real x, Real y) { return fmax(x, y); }); break;
     case GLSLstd450UMin: case GLSLstd450SMin: map2([](Real x, Real y) { return std::min(x, y); }); break;
     case GLSLstd450UMax: case GLSLstd450SMax: map2([](Real x, Real y) { return std::max(x, y); }); break;
     case GLSLstd450FClamp: case GLSLstd450NClamp:
-      map3([](Real x, Real lo, Real hi) { return std::fmin(std::fmax(x, lo), hi); });
+      map3([](Real x, Real lo, Real hi) { return fmin(fmax(x, lo), hi); });
       break;
     case GLSLstd450UClamp: case GLSLstd450SClamp:
       map3([](Real x, Real lo, Real hi) { return std::min(std::max(x, lo), hi); });
@@ -190,13 +230,13 @@ TwinResult<void> BasicExecutor<Real>::execute_ext(uint32_t index, const Lanes& l
       for (uint32_t s = 0; s < n; ++s)
         for (uint16_t l : lanes) {
           const Real a = e0.at(s0 ? 0 : s, l), b = e1.at(s1 ? 0 : s, l);
-          const Real t = std::fmin(std::fmax(R(R(x.at(s, l) - a) / R(b - a)), 0.0), 1.0);
+          const Real t = fmin(fmax(R(R(x.at(s, l) - a) / R(b - a)), 0.0), 1.0);
           d[s * L + l] = R(R(t * t) * R(3.0 - R(2.0 * t)));
         }
       break;
     }
-    case GLSLstd450Fma: map3([](Real a, Real b, Real c) { return std::fma(a, b, c); }); break;
-    case GLSLstd450Ldexp: map2([](Real x, Real e) { return std::ldexp(x, int(std::clamp<Real>(e, Real(-2000.0), Real(2000.0)))); }); break;
+    case GLSLstd450Fma: map3([](Real a, Real b, Real c) { return fma(a, b, c); }); break;
+    case GLSLstd450Ldexp: map2([](Real x, Real e) { return ldexp(x, int(std::clamp<Real>(e, Real(-2000.0), Real(2000.0)))); }); break;
     case GLSLstd450Modf: case GLSLstd450Frexp: {
       // The second result goes through the pointer operand.
       const Src x = arg(0);
@@ -206,10 +246,10 @@ TwinResult<void> BasicExecutor<Real>::execute_ext(uint32_t index, const Lanes& l
         for (uint16_t l : lanes) {
           Real other = 0, first;
           if (op == GLSLstd450Modf) {
-            first = R(std::modf(x.at(s, l), &other));
+            first = R(modf(x.at(s, l), &other));
           } else {
             int e = 0;
-            first = R(std::frexp(x.at(s, l), &e));
+            first = R(frexp(x.at(s, l), &e));
             other = e;
           }
           d[s * L + l] = first;
@@ -225,13 +265,13 @@ TwinResult<void> BasicExecutor<Real>::execute_ext(uint32_t index, const Lanes& l
         for (uint16_t l : lanes) {
           Real other = 0, first;
           if (op == GLSLstd450ModfStruct) {
-            first = std::modf(x.at(s, l), &other);
+            first = modf(x.at(s, l), &other);
           } else {
             int e = 0;
-            first = std::frexp(x.at(s, l), &e);
+            first = frexp(x.at(s, l), &e);
             other = e;
           }
-          d[s * L + l] = round(index, first);
+          d[s * L + l] = rounded(index, first);
           d[(half + s) * L + l] = other;
         }
       break;
@@ -245,7 +285,7 @@ TwinResult<void> BasicExecutor<Real>::execute_ext(uint32_t index, const Lanes& l
           const Real v = op == GLSLstd450Distance ? R(a.at(s, l) - arg(1).at(s, l)) : a.at(s, l);
           sum = s == 0 ? R(v * v) : R(sum + R(v * v));
         }
-        d[l] = R(std::sqrt(sum));
+        d[l] = R(sqrt(sum));
       }
       break;
     }
@@ -261,7 +301,7 @@ TwinResult<void> BasicExecutor<Real>::execute_ext(uint32_t index, const Lanes& l
     case GLSLstd450Normalize: {   // v * inversesqrt(dot(v, v)), as Mesa lowers it
       const Src a = arg(0);
       for (uint16_t l : lanes) {
-        const Real scale = R(1.0 / std::sqrt(dot(a, a, n, l)));
+        const Real scale = R(1.0 / sqrt(dot(a, a, n, l)));
         for (uint32_t s = 0; s < n; ++s) d[s * L + l] = R(a.at(s, l) * scale);
       }
       break;
@@ -289,7 +329,7 @@ TwinResult<void> BasicExecutor<Real>::execute_ext(uint32_t index, const Lanes& l
         const Real ni = dot(N, I, n, l);
         const Real k = R(1.0 - R(R(eta * eta) * R(1.0 - R(ni * ni))));
         for (uint32_t s = 0; s < n; ++s)
-          d[s * L + l] = k < 0 ? 0.0 : R(R(eta * I.at(s, l)) - R(R(R(eta * ni) + R(std::sqrt(k))) * N.at(s, l)));
+          d[s * L + l] = k < 0 ? 0.0 : R(R(eta * I.at(s, l)) - R(R(R(eta * ni) + R(sqrt(k))) * N.at(s, l)));
       }
       break;
     }
@@ -324,16 +364,16 @@ TwinResult<void> BasicExecutor<Real>::execute_ext(uint32_t index, const Lanes& l
     case GLSLstd450PackHalf2x16: {
       const Src a = arg(0);
       auto half_bits = [](Real x) -> uint32_t {
-        const Real h = round_to_half(x);
-        if (std::isnan(h)) return 0x7e00;
-        const uint32_t sign = std::signbit(h) ? 0x8000 : 0;
-        const Real m = std::fabs(h);
-        if (std::isinf(m)) return sign | 0x7c00;
+        const Real h = Real(round_to_half(double(x)));
+        if (isnan(h)) return 0x7e00;
+        const uint32_t sign = signbit(h) ? 0x8000 : 0;
+        const Real m = fabs(h);
+        if (isinf(m)) return sign | 0x7c00;
         if (m == 0) return sign;
         int e = 0;
-        const Real f = std::frexp(m, &e);   // m = f * 2^e, f in [0.5, 1)
-        if (e - 1 < -14) return sign | uint32_t(std::ldexp(m, 24));   // subnormal
-        return sign | uint32_t((e - 1 + 15) << 10) | (uint32_t(std::ldexp(f, 11)) & 0x3ff);
+        const Real f = frexp(m, &e);   // m = f * 2^e, f in [0.5, 1)
+        if (e - 1 < -14) return sign | uint32_t(ldexp(m, 24));   // subnormal
+        return sign | uint32_t((e - 1 + 15) << 10) | (uint32_t(ldexp(f, 11)) & 0x3ff);
       };
       for (uint16_t l : lanes) d[l] = Real(half_bits(a.at(0, l)) | (half_bits(a.at(1, l)) << 16));
       break;
@@ -343,9 +383,9 @@ TwinResult<void> BasicExecutor<Real>::execute_ext(uint32_t index, const Lanes& l
       auto from_half = [](uint32_t h) {
         const int exponent = int((h >> 10) & 0x1f);
         const Real mantissa = Real(h & 0x3ff);
-        const Real v = exponent == 0 ? std::ldexp(mantissa, -24)
-                         : exponent == 31 ? (mantissa != 0 ? nan_value<Real> : INFINITY)
-                                          : std::ldexp(1024.0 + mantissa, exponent - 25);
+        const Real v = exponent == 0 ? ldexp(mantissa, -24)
+                         : exponent == 31 ? (mantissa != 0 ? nan_value<Real>() : INFINITY)
+                                          : ldexp(1024.0 + mantissa, exponent - 25);
         return (h & 0x8000) ? -v : v;
       };
       for (uint16_t l : lanes) {
@@ -361,8 +401,8 @@ TwinResult<void> BasicExecutor<Real>::execute_ext(uint32_t index, const Lanes& l
       for (uint16_t l : lanes) {
         uint32_t packed = 0;
         for (uint32_t s = 0; s < 4; ++s) {
-          const Real v = snorm ? std::round(std::clamp<Real>(a.at(s, l), Real(-1.0), Real(1.0)) * 127.0)
-                                  : std::round(std::clamp<Real>(a.at(s, l), Real(0.0), Real(1.0)) * 255.0);
+          const Real v = snorm ? round(std::clamp<Real>(a.at(s, l), Real(-1.0), Real(1.0)) * 127.0)
+                                  : round(std::clamp<Real>(a.at(s, l), Real(0.0), Real(1.0)) * 255.0);
           packed |= (uint32_t(int32_t(v)) & 0xff) << (8 * s);
         }
         d[l] = packed;
@@ -387,8 +427,8 @@ TwinResult<void> BasicExecutor<Real>::execute_ext(uint32_t index, const Lanes& l
       for (uint16_t l : lanes) {
         uint32_t packed = 0;
         for (uint32_t s = 0; s < 2; ++s) {
-          const Real v = snorm ? std::round(std::clamp<Real>(a.at(s, l), Real(-1.0), Real(1.0)) * 32767.0)
-                                  : std::round(std::clamp<Real>(a.at(s, l), Real(0.0), Real(1.0)) * 65535.0);
+          const Real v = snorm ? round(std::clamp<Real>(a.at(s, l), Real(-1.0), Real(1.0)) * 32767.0)
+                                  : round(std::clamp<Real>(a.at(s, l), Real(0.0), Real(1.0)) * 65535.0);
           packed |= (uint32_t(int32_t(v)) & 0xffff) << (16 * s);
         }
         d[l] = packed;
@@ -414,6 +454,6 @@ TwinResult<void> BasicExecutor<Real>::execute_ext(uint32_t index, const Lanes& l
 }
 
 template TwinResult<void> BasicExecutor<double>::execute_ext(uint32_t, const Lanes&);
-template TwinResult<void> BasicExecutor<long double>::execute_ext(uint32_t, const Lanes&);
+template TwinResult<void> BasicExecutor<WideReal>::execute_ext(uint32_t, const Lanes&);
 
 }  // namespace twin

@@ -163,7 +163,7 @@ TwinResult<VertexResults<Real>> run_vertices(const DrawInput& input) {
           distances.assign(size_t(input.vertex_count) * count, 0.0);
         }
         for (uint32_t plane = 0; plane < count; ++plane)
-          for (uint32_t l = 0; l < n; ++l) distances[size_t(first + l) * count + plane] = slots[(slot + plane) * n + l];
+          for (uint32_t l = 0; l < n; ++l) distances[size_t(first + l) * count + plane] = double(slots[(slot + plane) * n + l]);
       };
       if (o.builtin == int(spv::BuiltIn::Position)) position_at(0);
       distances_at(o.builtin, 0, o.slots);
@@ -518,7 +518,7 @@ TwinResult<std::array<double, 4>> wide_pixel(const DrawInput& input, int x, int 
   wide.precision = Precision::exact;
   TwinImage image{input.width, input.height, std::vector<double>(size_t(input.width) * input.height * 4, 0.0),
                   std::vector<uint8_t>(size_t(input.width) * input.height, 0)};
-  if (auto ok = run_pixel<long double>(wide, x, y, nullptr, &image); !ok) return std::unexpected(ok.error());
+  if (auto ok = run_pixel<WideReal>(wide, x, y, nullptr, &image); !ok) return std::unexpected(ok.error());
   const size_t at = (size_t(y) * input.width + x) * 4;
   return std::array<double, 4>{image.rgba[at], image.rgba[at + 1], image.rgba[at + 2], image.rgba[at + 3]};
 }

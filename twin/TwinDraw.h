@@ -63,9 +63,9 @@ TwinResult<TwinImage> draw(const DrawInput& input);
 // covered.
 TwinResult<void> trace_pixel(const DrawInput& input, int x, int y, Observer& observer);
 
-// Pixel (x, y)'s colour with both stages computed in long double (a 64-bit significand,
-// 11 bits more than double) whatever the input's precision: the double twin's own error at
-// that pixel is its difference from this (the result is rounded to double, 1.1e-16 of it).
+// Pixel (x, y)'s colour with both stages computed in WideReal (Boost's quad, 113-bit
+// significand) whatever the input's precision: the double twin's own error at that pixel is
+// its difference from this (the result is rounded to double, 1.1e-16 of it).
 TwinResult<std::array<double, 4>> wide_pixel(const DrawInput& input, int x, int y);
 
 }  // namespace twin

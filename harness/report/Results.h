@@ -161,7 +161,7 @@ struct CellResult {
     double share = 0;                 // largest |render - twin| / the cell's interior tolerance there
     double reference_max_abs = -1;    // twin vs the cell's reference over its interior (-1: none)
     // The double twin's own error at the worst pixel: its colour against both stages run
-    // again there in long double (-1: not checked, i.e. not a double twin).
+    // again there in quad precision (-1: not checked, i.e. not a double twin).
     double self_error = -1;
     double ms = 0;                    // the twin's draw, every core
     std::string precision_note;       // --twin half, beyond the tolerance: which lines are reduced

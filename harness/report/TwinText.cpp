@@ -22,7 +22,7 @@ std::vector<std::string> twin_lines(const CellResult& r) {
     else if (r.status == CellStatus::fail && arithmetic && !formula)
       line += ": fp32 or the driver (the exact shader passes)";
   }
-  if (t.self_error >= 0) line += fmt::format(" (the double twin's own error there, against long double: {})", sci(t.self_error));
+  if (t.self_error >= 0) line += fmt::format(" (the double twin's own error there, against quad precision: {})", sci(t.self_error));
   std::vector<std::string> lines{line};
   if (!t.nonfinite_origin.empty()) lines.push_back("NaN/Inf first made at " + t.nonfinite_origin);
   return lines;

@@ -102,7 +102,7 @@ CellResult::TwinFigures CellTwins::figures(GroupDrawer& drawer, const Variant& v
     drawn_.erase(key);
     return twin_of(drawer, variant, cell, row).image.has_value();
   };
-  // The double twin checked against itself in long double where the render is furthest
+  // The double twin checked against itself in quad precision where the render is furthest
   // from it, once per twin image (every cell of a variant and language shares it).
   if (precision_ == "double" && own.worst_x >= 0) {
     auto& checked = self_errors_[key];

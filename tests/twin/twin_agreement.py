@@ -11,7 +11,7 @@ double: `run --backend vulkan --twin double` over the library: on every per-pixe
         double twin (the library's own shader, executed exactly) agrees with the double model
         (reference/) to 1e-9, or to the bound of a difference of form documented in
         docs/errata.md ("The twin against the models"). A third implementation checks both.
-        And the double twin is within 1e-12 of the same shader run in long double.
+        And the double twin is within 1e-12 of the same shader run in quad precision (Boost).
 """
 import json
 import os
@@ -94,16 +94,16 @@ def double_bound(case, variant):
 def check_double(source, binary, scratch):
     failures = []
     cells = run(binary, "", "double", os.path.join(scratch, "double-library.json"))
-    # The double twin itself, against its long-double run at each image's worst pixel.
+    # The double twin itself, against its quad-precision run at each image's worst pixel.
     self_errors = [(t["self_error"], c["id"]) for c in cells if (t := twin_of(c)) is not None and t["self_error"] >= 0]
     if not self_errors:
-        failures.append("no cell checked the double twin against long double")
+        failures.append("no cell checked the double twin against quad precision")
     else:
         worst_self = max(self_errors)
-        print(f"the double twin's own error (against long double, {len(self_errors)} cells): worst "
+        print(f"the double twin's own error (against Boost quad precision, {len(self_errors)} cells): worst "
               f"{worst_self[0]:.3g} at {worst_self[1]}")
         if worst_self[0] > 1e-12:
-            failures.append(f"{worst_self[1]}: the double twin is {worst_self[0]:.3g} from its long-double run")
+            failures.append(f"{worst_self[1]}: the double twin is {worst_self[0]:.3g} from its quad-precision run")
     worst = {}
     for cell in cells:
         t = twin_of(cell)

@@ -31,7 +31,7 @@ class TwinRenderer final : public Backend {
   // Of the last image render() drew: the instruction that first computed a NaN or Inf at
   // pixel (x, y); nothing when every value there is finite.
   Result<std::optional<twin::ValueOrigin>> nonfinite_origin(int x, int y) const;
-  // Of the last image: pixel (x, y) with both stages in long double (twin::wide_pixel).
+  // Of the last image: pixel (x, y) with both stages in quad precision (twin::wide_pixel).
   Result<std::array<double, 4>> wide_pixel(int x, int y) const;
   // The last draw's program (null before a draw).
   const twin::Program* last_program() const;
