@@ -4,11 +4,11 @@
 #include <spirv-tools/libspirv.h>
 #include <spirv/unified1/spirv.hpp11>
 
+#include <cmath>
 #include <cstring>
 #include <limits>
 
 #include "twin/OpcodeNames.gen.h"
-#include "twin/Precision.h"
 
 namespace twin {
 namespace {
@@ -418,18 +418,6 @@ TwinResult<std::shared_ptr<const Module>> load_module(std::span<const uint32_t> 
       m.types[r.words[0]].array_stride = r.words[2];
   if (auto ok = decoder.decode(collected.raw, entry_point); !ok) return std::unexpected(ok.error());
   return std::shared_ptr<const Module>(std::move(module));
-}
-
-const char* to_string(Precision p) {
-  return p == Precision::exact ? "double" : p == Precision::single ? "float" : "half";
-}
-
-bool parse_precision(const std::string& text, Precision& out) {
-  if (text == "double") out = Precision::exact;
-  else if (text == "float") out = Precision::single;
-  else if (text == "half") out = Precision::half;
-  else return false;
-  return true;
 }
 
 }  // namespace twin
