@@ -29,6 +29,9 @@ double wrap_integer(const Type& t, int64_t x) {
   return t.is_signed ? double(int32_t(uint32_t(uint64_t(x)))) : double(uint32_t(uint64_t(x)));
 }
 
+// -x as the device computes it: INT64_MIN stays itself instead of overflowing.
+int64_t wrapping_negate(int64_t x) { return int64_t(0 - uint64_t(x)); }
+
 int64_t as_integer(double x) {
   if (!(x == x)) return 0;
   if (x >= 9.2e18) return std::numeric_limits<int64_t>::max();
@@ -771,7 +774,7 @@ TwinResult<void> Executor::execute_op(uint32_t index, Lanes& lanes) {
       const Src a = src(ops[0]);
       double* d = dst(in.result);
       for (uint32_t s = 0; s < n; ++s)
-        for (uint16_t l : lanes) d[s * L + l] = wrap_integer(scalar_type, -as_integer(a.at(s, l)));
+        for (uint16_t l : lanes) d[s * L + l] = wrap_integer(scalar_type, wrapping_negate(as_integer(a.at(s, l))));
       return {};
     }
     case Op::OpNot: {
@@ -781,8 +784,9 @@ TwinResult<void> Executor::execute_op(uint32_t index, Lanes& lanes) {
         for (uint16_t l : lanes) d[s * L + l] = wrap_integer(scalar_type, ~as_integer(a.at(s, l)));
       return {};
     }
-    case Op::OpIAdd: integer_binary([](int64_t x, int64_t y) { return x + y; }); return {};
-    case Op::OpISub: integer_binary([](int64_t x, int64_t y) { return x - y; }); return {};
+    // In uint64: 64-bit operands wrap as the device's do, where int64_t would overflow.
+    case Op::OpIAdd: integer_binary([](int64_t x, int64_t y) { return int64_t(uint64_t(x) + uint64_t(y)); }); return {};
+    case Op::OpISub: integer_binary([](int64_t x, int64_t y) { return int64_t(uint64_t(x) - uint64_t(y)); }); return {};
     case Op::OpIMul: integer_binary([](int64_t x, int64_t y) { return int64_t(uint64_t(x) * uint64_t(y)); }); return {};
     case Op::OpSDiv: {
       const Src a = src(ops[0]), b = src(ops[1]);
@@ -790,7 +794,7 @@ TwinResult<void> Executor::execute_op(uint32_t index, Lanes& lanes) {
       for (uint32_t s = 0; s < n; ++s)
         for (uint16_t l : lanes) {
           const int64_t x = signed_of(ops[0], a.at(s, l)), y = signed_of(ops[1], b.at(s, l));
-          d[s * L + l] = wrap_integer(scalar_type, y == 0 ? 0 : x / y);
+          d[s * L + l] = wrap_integer(scalar_type, y == 0 ? 0 : y == -1 ? wrapping_negate(x) : x / y);
         }
       return {};
     }
@@ -810,7 +814,7 @@ TwinResult<void> Executor::execute_op(uint32_t index, Lanes& lanes) {
       for (uint32_t s = 0; s < n; ++s)
         for (uint16_t l : lanes) {
           const int64_t x = signed_of(ops[0], a.at(s, l)), y = signed_of(ops[1], b.at(s, l));
-          int64_t r = y == 0 ? 0 : x % y;
+          int64_t r = y == 0 || y == -1 ? 0 : x % y;   // INT64_MIN % -1 traps
           if (op == Op::OpSMod && r != 0 && ((r < 0) != (y < 0))) r += y;
           d[s * L + l] = wrap_integer(scalar_type, r);
         }

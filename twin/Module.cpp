@@ -285,7 +285,16 @@ class Decoder {
         m_.variables.push_back(w[1]);
         if (w.size() > 3) m_.variable_initializer[w[1]] = w[3];
         break;
-      case Op::OpCapability: case Op::OpExtension: case Op::OpMemoryModel: case Op::OpModuleProcessed:
+      case Op::OpCapability: {
+        // The executor knows each pointer id's variable and offset when it computes it: it
+        // cannot follow pointers chosen (OpSelect, OpPhi), stored or loaded at run time.
+        const auto capability = spv::Capability(w[0]);
+        if (capability == spv::Capability::VariablePointers || capability == spv::Capability::VariablePointersStorageBuffer ||
+            capability == spv::Capability::PhysicalStorageBufferAddresses)
+          return std::unexpected(TwinError{.message = "the twin does not support variable or physical pointers"});
+        break;
+      }
+      case Op::OpExtension: case Op::OpMemoryModel: case Op::OpModuleProcessed:
       case Op::OpSourceExtension:
       case Op::OpMemberName: case Op::OpDecorationGroup: case Op::OpExecutionModeId:
         break;

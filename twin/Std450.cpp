@@ -355,8 +355,9 @@ TwinResult<void> Executor::execute_ext(uint32_t index, const Lanes& lanes) {
       for (uint16_t l : lanes) {
         uint32_t packed = 0;
         for (uint32_t s = 0; s < 4; ++s) {
-          const double v = snorm ? std::round(std::clamp(a.at(s, l), -1.0, 1.0) * 127.0)
-                                  : std::round(std::clamp(a.at(s, l), 0.0, 1.0) * 255.0);
+          // fmax/fmin, not clamp: NaN packs as 0 instead of reaching an undefined int conversion.
+          const double v = snorm ? std::round(std::fmin(std::fmax(a.at(s, l), -1.0), 1.0) * 127.0)
+                                  : std::round(std::fmin(std::fmax(a.at(s, l), 0.0), 1.0) * 255.0);
           packed |= (uint32_t(int32_t(v)) & 0xff) << (8 * s);
         }
         d[l] = packed;
@@ -381,8 +382,8 @@ TwinResult<void> Executor::execute_ext(uint32_t index, const Lanes& lanes) {
       for (uint16_t l : lanes) {
         uint32_t packed = 0;
         for (uint32_t s = 0; s < 2; ++s) {
-          const double v = snorm ? std::round(std::clamp(a.at(s, l), -1.0, 1.0) * 32767.0)
-                                  : std::round(std::clamp(a.at(s, l), 0.0, 1.0) * 65535.0);
+          const double v = snorm ? std::round(std::fmin(std::fmax(a.at(s, l), -1.0), 1.0) * 32767.0)
+                                  : std::round(std::fmin(std::fmax(a.at(s, l), 0.0), 1.0) * 65535.0);   // as above
           packed |= (uint32_t(int32_t(v)) & 0xffff) << (16 * s);
         }
         d[l] = packed;

@@ -43,7 +43,7 @@ void leaves(const Module& m, uint32_t type_id, int location, int component, uint
     case K::structure: {
       int at = location;
       for (size_t i = 0; i < t.members.size(); ++i) {
-        if (t.member_location[i] >= 0) at = t.member_location[i];
+        if (t.member_location[i] >= 0) at = std::min(t.member_location[i], max_locations);
         leaves(m, t.members[i], at, 0, slot + t.member_slots[i], out, at);
       }
       next_location = at;
@@ -75,7 +75,9 @@ std::vector<Interface> interface_of(const Module& m, spv::StorageClass storage) 
         if (t.member_builtin[k] >= 0) i.member_builtins.push_back({t.member_slots[k], t.member_builtin[k]});
     if (d.location >= 0) {
       int next = 0;
-      leaves(m, pointer.element, d.location, d.component, 0, i.parts, next);
+      // Parts at max_locations or beyond are not passed on anyway; the cap keeps the next
+      // locations' arithmetic from overflowing (Location may be any 32-bit value).
+      leaves(m, pointer.element, std::min(d.location, max_locations), d.component, 0, i.parts, next);
     }
     out.push_back(std::move(i));
   }
@@ -360,6 +362,11 @@ TwinResult<Program> load_program(std::span<const uint32_t> vertex_spirv, const s
   if (!vertex) return std::unexpected(TwinError{.message = "vertex stage: " + vertex.error().to_string()});
   auto fragment = load_module(fragment_spirv, fragment_entry);
   if (!fragment) return std::unexpected(TwinError{.message = "fragment stage: " + fragment.error().to_string()});
+  // Either would run, wrongly: a vertex shader per pixel reads no varyings, its position is lost.
+  if (spv::ExecutionModel((*vertex)->execution_model) != spv::ExecutionModel::Vertex)
+    return std::unexpected(TwinError{.message = "vertex stage: '" + vertex_entry + "' is not a vertex shader"});
+  if (spv::ExecutionModel((*fragment)->execution_model) != spv::ExecutionModel::Fragment)
+    return std::unexpected(TwinError{.message = "fragment stage: '" + fragment_entry + "' is not a fragment shader"});
   return Program{std::move(*vertex), std::move(*fragment)};
 }
 
