@@ -245,6 +245,7 @@ TwinResult<void> Executor::run() {
   Lanes all(lanes_);
   for (uint32_t l = 0; l < lanes_; ++l) all[l] = uint16_t(l);
   const Function& entry = m_.functions.at(m_.entry_function);
+  work_ = 0;
   Arrivals arrivals;
   auto result = run_region(entry, entry.blocks.front().label, std::move(all), {}, arrivals);
   register_base_ = std::move(saved);
@@ -292,6 +293,10 @@ std::vector<std::pair<uint32_t, Executor::Lanes>> Executor::branch_targets(const
 }
 
 TwinResult<void> Executor::run_block_body(const Block& block, Lanes& lanes) {
+  work_ += block.cost;
+  if (work_ > work_limit_)
+    return std::unexpected(error(m_.instructions[block.first], "the batch exceeded the work limit (" +
+                                                                 std::to_string(work_limit_) + "): a loop that does not end?"));
   for (uint32_t i = block.first; i < block.last && !lanes.empty(); ++i)
     if (auto ok = execute(i, lanes); !ok) return ok;
   return {};

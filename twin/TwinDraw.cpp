@@ -94,6 +94,7 @@ double stage_round(Precision p, double x) { return p == Precision::exact ? x : r
 TwinResult<VertexResults> run_vertices(const DrawInput& input) {
   const Module& m = *input.program.vertex;
   Executor executor(m, input.resources, input.precision);
+  executor.limit_work(input.work_limit);
   const auto inputs = interface_of(m, spv::StorageClass::Input);
   const auto outputs = interface_of(m, spv::StorageClass::Output);
   VertexResults results;
@@ -384,6 +385,7 @@ TwinResult<TwinImage> draw(const DrawInput& input) {
   std::vector<uint8_t> failed(threads, 0);
   auto work = [&](unsigned t) {
     Executor executor(stage.module(), input.resources, input.precision);
+    executor.limit_work(input.work_limit);
     std::vector<FragmentLane> lanes;
     lanes.reserve(batch_lanes + 16);
     auto flush = [&]() -> bool {
@@ -430,6 +432,7 @@ TwinResult<void> trace_pixel(const DrawInput& input, int x, int y, Observer& obs
   for (uint32_t l = 0; l < lanes.size(); ++l)
     if (lanes[l].x == x && lanes[l].y == y && lanes[l].triangle == triangle) lane = l;
   Executor executor(stage.module(), input.resources, input.precision);
+  executor.limit_work(input.work_limit);
   executor.observe(&observer, lane);
   return stage.run(executor, lanes, nullptr);
 }
