@@ -5,18 +5,27 @@ repository). The checked-in fuzz/corpus/<target>/ holds only what the library do
 hand-written seeds (hand_*), crash regressions (crash_*) and results JSON cut from a real
 run (with `--results RUN.json`, written into fuzz/corpus/json_report_fuzzer/).
 
-  make_corpus.py OUT [--results RUN.json]"""
+  make_corpus.py OUT [--results RUN.json] [--glslang GLSLANGVALIDATOR]
+
+With --glslang, twin_fuzzer's seeds are the library's fragment shaders compiled to SPIR-V
+for Vulkan (the GLSL ones that compile alone: legacy and ES shaders need the project's
+dialect passes first, so they are left out), and fuzz/twin_shaders/: hand-written ones for
+what the library's shaders do not use (loops, every image instruction, integers)."""
 import hashlib
 import json
 import pathlib
 import re
+import subprocess
 import sys
+import tempfile
 import tomllib
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 CHECKED_IN = ROOT / "fuzz" / "corpus"
 CORPUS = CHECKED_IN   # set in main() for the generated seeds
 CASE_DIRS = ["shaders/cases", "tests/realworld/cases", "tests/differential/cases", "tests/mutants/cases"]
+TWIN_SHADERS = ["shaders/glsl/*.frag", "tests/realworld/**/*.frag", "tests/differential/glsl/*.frag",
+                "fuzz/twin_shaders/*.frag"]
 
 
 def reset(target):
@@ -56,16 +65,35 @@ def cases():
                 yield case, root, vname, variant
 
 
+def twin_seeds(glslang):
+    folder = reset("twin_fuzzer")
+    with tempfile.TemporaryDirectory() as scratch:
+        out = pathlib.Path(scratch) / "frag.spv"
+        for pattern in TWIN_SHADERS:
+            for src in sorted(ROOT.glob(pattern)):
+                done = subprocess.run([glslang, "-V", "-o", str(out), str(src)], stdout=subprocess.DEVNULL,
+                                      stderr=subprocess.DEVNULL)
+                if done.returncode == 0:
+                    name = "_".join(src.relative_to(ROOT).with_suffix("").parts[1:])
+                    put(folder, f"{name}.spv", out.read_bytes())
+
+
+def option(args, name):
+    if name not in args:
+        return None
+    i = args.index(name)
+    value = args[i + 1]
+    del args[i:i + 2]
+    return value
+
+
 def main():
     global CORPUS
     args = sys.argv[1:]
-    results = None
-    if "--results" in args:
-        i = args.index("--results")
-        results = args[i + 1]
-        del args[i:i + 2]
+    results = option(args, "--results")
+    glslang = option(args, "--glslang")
     if len(args) != 1:
-        sys.exit("usage: make_corpus.py OUT [--results RUN.json]")
+        sys.exit("usage: make_corpus.py OUT [--results RUN.json] [--glslang GLSLANGVALIDATOR]")
     CORPUS = pathlib.Path(args[0])
     folder = reset("case_file_fuzzer")
     for d in CASE_DIRS:
@@ -103,6 +131,9 @@ def main():
     for f in [ROOT / "shaders/expectations.toml", ROOT / "tests/realworld/planted_bugs.toml",
               ROOT / "tests/mutants/expectations.toml"]:
         put(exp, f"{f.parent.name}_{f.name}", f.read_text())
+
+    if glslang:
+        twin_seeds(glslang)
 
     if results:
         # A real results file, cut into small ones: each status once, and a file of a few cells.

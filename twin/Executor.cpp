@@ -69,6 +69,9 @@ double wrap_integer(const Type& t, int64_t x) {
   return t.is_signed ? double(int32_t(uint32_t(uint64_t(x)))) : double(uint32_t(uint64_t(x)));
 }
 
+// -x as the device computes it: INT64_MIN stays itself instead of overflowing.
+int64_t wrapping_negate(int64_t x) { return int64_t(0 - uint64_t(x)); }
+
 template <typename T>
 int64_t as_integer(T value) {
   const double x = double(value);
@@ -323,6 +326,7 @@ TwinResult<void> BasicExecutor<Real>::run() {
   Lanes all(lanes_);
   for (uint32_t l = 0; l < lanes_; ++l) all[l] = uint16_t(l);
   const Function& entry = m_.functions.at(m_.entry_function);
+  work_ = 0;
   Arrivals arrivals;
   auto result = run_region(entry, entry.blocks.front().label, std::move(all), {}, arrivals);
   register_base_ = std::move(saved);
@@ -372,6 +376,10 @@ std::vector<std::pair<uint32_t, typename BasicExecutor<Real>::Lanes>> BasicExecu
 
 template <typename Real>
 TwinResult<void> BasicExecutor<Real>::run_block_body(const Block& block, Lanes& lanes) {
+  work_ += block.cost;
+  if (work_ > work_limit_)
+    return std::unexpected(error(m_.instructions[block.first], "the batch exceeded the work limit (" +
+                                                                 std::to_string(work_limit_) + "): a loop that does not end?"));
   uint32_t first = block.first;
   // A block's OpPhis are parallel copies: one may take another phi of the same block from
   // the back edge (a swap in a loop), so every phi reads its value before any is written.
@@ -893,7 +901,7 @@ TwinResult<void> BasicExecutor<Real>::execute_op(uint32_t index, Lanes& lanes) {
       const Src a = src(ops[0]);
       Real* d = dst(in.result);
       for (uint32_t s = 0; s < n; ++s)
-        for (uint16_t l : lanes) d[s * L + l] = wrap_integer(scalar_type, -as_integer(a.at(s, l)));
+        for (uint16_t l : lanes) d[s * L + l] = wrap_integer(scalar_type, wrapping_negate(as_integer(a.at(s, l))));
       return {};
     }
     case Op::OpNot: {
@@ -903,8 +911,9 @@ TwinResult<void> BasicExecutor<Real>::execute_op(uint32_t index, Lanes& lanes) {
         for (uint16_t l : lanes) d[s * L + l] = wrap_integer(scalar_type, ~as_integer(a.at(s, l)));
       return {};
     }
-    case Op::OpIAdd: integer_binary([](int64_t x, int64_t y) { return x + y; }); return {};
-    case Op::OpISub: integer_binary([](int64_t x, int64_t y) { return x - y; }); return {};
+    // In uint64: 64-bit operands wrap as the device's do, where int64_t would overflow.
+    case Op::OpIAdd: integer_binary([](int64_t x, int64_t y) { return int64_t(uint64_t(x) + uint64_t(y)); }); return {};
+    case Op::OpISub: integer_binary([](int64_t x, int64_t y) { return int64_t(uint64_t(x) - uint64_t(y)); }); return {};
     case Op::OpIMul: integer_binary([](int64_t x, int64_t y) { return int64_t(uint64_t(x) * uint64_t(y)); }); return {};
     case Op::OpSDiv: {
       const Src a = src(ops[0]), b = src(ops[1]);
@@ -912,7 +921,7 @@ TwinResult<void> BasicExecutor<Real>::execute_op(uint32_t index, Lanes& lanes) {
       for (uint32_t s = 0; s < n; ++s)
         for (uint16_t l : lanes) {
           const int64_t x = signed_of(ops[0], a.at(s, l)), y = signed_of(ops[1], b.at(s, l));
-          d[s * L + l] = wrap_integer(scalar_type, y == 0 ? 0 : x / y);
+          d[s * L + l] = wrap_integer(scalar_type, y == 0 ? 0 : y == -1 ? wrapping_negate(x) : x / y);
         }
       return {};
     }
@@ -932,7 +941,7 @@ TwinResult<void> BasicExecutor<Real>::execute_op(uint32_t index, Lanes& lanes) {
       for (uint32_t s = 0; s < n; ++s)
         for (uint16_t l : lanes) {
           const int64_t x = signed_of(ops[0], a.at(s, l)), y = signed_of(ops[1], b.at(s, l));
-          int64_t r = y == 0 ? 0 : x % y;
+          int64_t r = y == 0 || y == -1 ? 0 : x % y;   // INT64_MIN % -1 traps
           if (op == Op::OpSMod && r != 0 && ((r < 0) != (y < 0))) r += y;
           d[s * L + l] = wrap_integer(scalar_type, r);
         }

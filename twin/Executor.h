@@ -47,10 +47,18 @@ class Observer {
   virtual void value(uint32_t instruction, std::span<const double> values) = 0;
 };
 
+// How much one batch may do before run() gives up on it, in the blocks' costs (Block::cost:
+// one per instruction and operand plus the values it reads and writes): the loop cap alone
+// does not stop nested loops. The library's shaders need under 2^10 per batch, a loop of
+// 40 texture reads 2^13, a 1000-step loop of 100 values some 2^17. 2^28 is what the loop
+// cap let a small loop run; an endless loop stops after 4 to 7 s of one core (-O2).
+constexpr uint64_t default_work_limit = uint64_t{1} << 28;
+
 template <typename Real>
 class BasicExecutor {
  public:
   BasicExecutor(const Module& module, const BoundResources& resources, Precision precision);
+  void limit_work(uint64_t limit) { work_limit_ = limit; }
 
   // A new batch of `lanes` invocations; quads: lanes form 2x2 quads (fragment stage).
   // Input variables are then filled through input(), outputs read through output().
@@ -133,6 +141,8 @@ class BasicExecutor {
   Observer* observer_ = nullptr;
   uint32_t observed_lane_ = 0;
   uint32_t register_slots_ = 0;           // per lane, over every register
+  uint64_t work_limit_ = default_work_limit;
+  uint64_t work_ = 0;                     // this batch's, so far
 };
 
 // The twin in double (float and half round their results), and in WideReal (WideReal.h)

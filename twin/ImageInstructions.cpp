@@ -57,6 +57,10 @@ using spv::Op;
 
 constexpr uint32_t sampler_shift = 65536;
 
+// An integer operand (texel coordinate, level) as int: a 64-bit integer's slot can be far
+// beyond int, whose conversion would be undefined.
+int as_int(double x) { return x == x ? int(std::clamp(x, -1e9, 1e9)) : 0; }
+
 }  // namespace
 
 template <typename Real>
@@ -102,7 +106,12 @@ TwinResult<void> BasicExecutor<Real>::execute_image(uint32_t index, const Lanes&
   const Type& it = m_.types[image_type];
   if (it.arrayed) return std::unexpected(error(in, "the twin does not sample arrayed images"));
   const auto dim = spv::Dim(it.dim);
-  const uint32_t coordinates = dim == spv::Dim::Dim1D ? 1 : dim == spv::Dim::Dim2D ? 2 : 3;
+  const uint32_t dimensions = dim == spv::Dim::Dim1D || dim == spv::Dim::Buffer ? 1
+                              : dim == spv::Dim::Dim3D || dim == spv::Dim::Cube ? 3
+                                                                               : 2;
+  // Src::at does not check its slot: never read more components than an operand has (a
+  // Buffer image's coordinate is a scalar).
+  auto components = [&](uint32_t id, uint32_t wanted) { return std::min(wanted, slots_of(id)); };
 
   auto missing = [&]() { return std::unexpected(error(in, "a texture instruction reads a binding with no texture")); };
 
@@ -113,12 +122,17 @@ TwinResult<void> BasicExecutor<Real>::execute_image(uint32_t index, const Lanes&
       const bool implicit = op == Op::OpImageSampleImplicitLod || op == Op::OpImageSampleProjImplicitLod ||
                             op == Op::OpImageQueryLod;
       const Src coordinate = src(ops[1]);
+      // The projective divisor is the component after the coordinates.
+      const uint32_t coordinates =
+          std::min(dimensions, projective ? std::max(slots_of(ops[1]), 1u) - 1 : slots_of(ops[1]));
       const uint32_t mask = ops.size() > 2 ? ops[2] : 0;
       size_t next = 3;
       std::optional<Src> bias, lod, grad_x, grad_y;
+      uint32_t grad_components = 0;
       if (mask & uint32_t(spv::ImageOperandsMask::Bias)) bias = src(ops[next++]);
       if (mask & uint32_t(spv::ImageOperandsMask::Lod)) lod = src(ops[next++]);
       if (mask & uint32_t(spv::ImageOperandsMask::Grad)) {
+        grad_components = std::min(components(ops[next], coordinates), slots_of(ops[next + 1]));
         grad_x = src(ops[next++]);
         grad_y = src(ops[next++]);
       }
@@ -138,7 +152,7 @@ TwinResult<void> BasicExecutor<Real>::execute_image(uint32_t index, const Lanes&
         double lambda = 0;
         if (grad_x) {
           CoordinateDerivatives g;
-          for (uint32_t k = 0; k < coordinates; ++k) {
+          for (uint32_t k = 0; k < grad_components; ++k) {
             g.dx[k] = double(grad_x->at(k, l));
             g.dy[k] = double(grad_y->at(k, l));
           }
@@ -172,6 +186,7 @@ TwinResult<void> BasicExecutor<Real>::execute_image(uint32_t index, const Lanes&
     }
     case Op::OpImageFetch: {
       const Src coordinate = src(ops[1]);
+      const uint32_t coordinates = components(ops[1], dimensions);
       const uint32_t mask = ops.size() > 2 ? ops[2] : 0;
       std::optional<Src> lod;
       if (mask & uint32_t(spv::ImageOperandsMask::Lod)) lod = src(ops[3]);
@@ -179,8 +194,8 @@ TwinResult<void> BasicExecutor<Real>::execute_image(uint32_t index, const Lanes&
         const Bound b = bound(l);
         if (!b.image) return missing();
         std::array<int, 3> texel{0, 0, 0};
-        for (uint32_t k = 0; k < coordinates; ++k) texel[k] = int(std::clamp(double(coordinate.at(k, l)), -1e9, 1e9));
-        const auto value = fetch(*b.image, b.sampler.srgb, texel, lod ? int(double(lod->at(0, l))) : 0);
+        for (uint32_t k = 0; k < coordinates; ++k) texel[k] = as_int(double(coordinate.at(k, l)));
+        const auto value = fetch(*b.image, b.sampler.srgb, texel, lod ? as_int(double(lod->at(0, l))) : 0);
         const uint32_t n = slots_of(in.result);
         for (uint32_t s = 0; s < n && s < 4; ++s) d[s * L + l] = rounded(index, value[s]);
       }
@@ -192,7 +207,7 @@ TwinResult<void> BasicExecutor<Real>::execute_image(uint32_t index, const Lanes&
       for (uint16_t l : lanes) {
         const Bound b = bound(l);
         if (!b.image) return missing();
-        const auto size = level_size(*b.image, lod ? int(double(lod->at(0, l))) : 0);
+        const auto size = level_size(*b.image, lod ? as_int(double(lod->at(0, l))) : 0);
         for (uint32_t s = 0; s < n && s < 3; ++s) d[s * L + l] = size[s];
       }
       return {};

@@ -4,6 +4,7 @@
 #include <spirv-tools/libspirv.h>
 #include <spirv/unified1/spirv.hpp11>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -18,7 +19,29 @@ using spv::Op;
 struct RawInstruction {
   uint16_t op;
   std::vector<uint32_t> words;   // operands after the opcode word
+  std::vector<uint16_t> ids;     // which of `words` are ids
 };
+
+bool is_id(spv_operand_type_t type) {
+  return type == SPV_OPERAND_TYPE_ID || type == SPV_OPERAND_TYPE_TYPE_ID || type == SPV_OPERAND_TYPE_RESULT_ID ||
+         type == SPV_OPERAND_TYPE_MEMORY_SEMANTICS_ID || type == SPV_OPERAND_TYPE_SCOPE_ID;
+}
+
+// Renumbers the ids densely, in their order, and returns the new bound. Valid SPIR-V may use
+// any ids below a bound of up to 2^22, and every table by id (the module's and each
+// executor's) would then hold millions of entries: 2 GB and 15 s to draw a seed whose
+// header alone was changed.
+uint32_t compact_ids(std::vector<RawInstruction>& raw) {
+  std::vector<uint32_t> used;
+  for (const RawInstruction& r : raw)
+    for (uint16_t i : r.ids) used.push_back(r.words[i]);
+  std::sort(used.begin(), used.end());
+  used.erase(std::unique(used.begin(), used.end()), used.end());
+  for (RawInstruction& r : raw)
+    for (uint16_t i : r.ids)
+      r.words[i] = uint32_t(std::lower_bound(used.begin(), used.end(), r.words[i]) - used.begin()) + 1;
+  return uint32_t(used.size()) + 1;
+}
 
 std::string literal_string(std::span<const uint32_t> words) {
   std::string s;
@@ -50,9 +73,19 @@ bool has_result(Op op) {
   return result;
 }
 
+// What one invocation may hold (registers and variables) and what the module's constants
+// may hold, counted in values (a scalar, a handle, a struct: one each). The executor keeps
+// every invocation's values for a whole batch, and loops over a type's elements: a valid
+// module can declare arrays of 2^32 elements, which would exhaust memory or never finish.
+constexpr uint64_t max_invocation_values = uint64_t{1} << 18;
+constexpr uint64_t max_constant_values = uint64_t{1} << 20;
+constexpr uint64_t saturated = uint64_t{1} << 40;   // beyond every limit, far from overflow
+
+uint64_t times(uint64_t a, uint64_t b) { return a && b > saturated / a ? saturated : std::min(a * b, saturated); }
+
 class Decoder {
  public:
-  Decoder(Module& m) : m_(m) {}
+  Decoder(Module& m) : m_(m), elements_(m.bound, 0) {}
 
   TwinResult<void> decode(const std::vector<RawInstruction>& raw, const std::string& entry_point) {
     m_.lines.push_back({});
@@ -132,6 +165,9 @@ class Decoder {
       size_t first = 0;
       if (has_result_type(op)) instruction.result_type = w[first++];
       if (has_result(op)) instruction.result = w[first++];
+      std::vector<uint32_t>& ids = operand_ids_.emplace_back();
+      for (uint16_t i : r.ids)
+        if (i >= first) ids.push_back(w[i]);
       if (instruction.result && instruction.result_type) m_.type_of[instruction.result] = instruction.result_type;
       instruction.first_operand = uint32_t(m_.operands.size());
       instruction.operand_count = uint16_t(w.size() - first);
@@ -146,7 +182,7 @@ class Decoder {
       if (strings.count(file_id)) m_.sources[strings[file_id]] = text;
     if (m_.entry_function == 0)
       return std::unexpected(TwinError{.message = "the module has no entry point named '" + entry_point + "'"});
-    return {};
+    return check_limits();
   }
 
  private:
@@ -184,32 +220,104 @@ class Decoder {
     }
   }
 
-  // Slot counts, once every type is known (types are declared before use).
+  // Slot counts, once every type is known (types are declared before use), and element
+  // counts for the limits. Slots saturate rather than wrap: a type too large to hold is
+  // refused where a value or a variable of it would be held (check_limits, charge_constant).
   void layout(uint32_t id) {
     Type& t = m_.types[id];
     using K = Type::Kind;
+    auto slots = [](uint64_t n) { return uint32_t(std::min<uint64_t>(n, std::numeric_limits<uint32_t>::max())); };
     switch (t.kind) {
       case K::boolean: case K::integer: case K::floating: case K::image: case K::sampler: case K::sampled_image:
       case K::pointer:
         t.slots = 1;
+        elements_[id] = 1;
         break;
-      case K::vector: case K::matrix: case K::array: t.slots = t.count * m_.types[t.element].slots; break;
+      case K::runtime_array: elements_[id] = 1; break;
+      case K::vector: case K::matrix: case K::array:
+        t.slots = slots(uint64_t(t.count) * m_.types[t.element].slots);
+        elements_[id] = times(t.count, elements_[t.element]);
+        break;
       case K::structure: {
-        uint32_t total = 0;
+        uint64_t total = 0, elements = 1;
         t.member_slots.clear();
         for (uint32_t member : t.members) {
-          t.member_slots.push_back(total);
+          t.member_slots.push_back(slots(total));
           total += m_.types[member].slots;
+          elements = std::min(elements + elements_[member], saturated);
         }
-        t.slots = total;
+        t.slots = slots(total);
+        elements_[id] = elements;
         break;
       }
       default: break;
     }
   }
 
+  // Values of type `type_id`, or of what it points to.
+  uint64_t elements_of(uint32_t type_id) const {
+    const Type& t = m_.types[type_id];
+    return t.kind == Type::Kind::pointer ? elements_[t.element] : elements_[type_id];
+  }
+
+  // An array length: beyond uint32 it is saturated (the array is then refused where held).
   uint64_t constant_value(uint32_t id) const {
-    return m_.is_constant[id] && !m_.constants[id].empty() ? uint64_t(m_.constants[id][0]) : 0;
+    if (!m_.is_constant[id] || m_.constants[id].empty()) return 0;
+    const double v = m_.constants[id][0];
+    return v >= 0 && v <= 4294967295.0 ? uint64_t(v) : v > 0 ? 4294967295u : 0;
+  }
+
+  TwinResult<void> charge_constant(uint32_t type_id) {
+    constant_values_ = std::min(constant_values_ + elements_[type_id], saturated);
+    if (constant_values_ <= max_constant_values) return {};
+    return std::unexpected(TwinError{.message = "the module's constants hold more than " +
+                                                std::to_string(max_constant_values) + " values"});
+  }
+
+  // What an instruction costs the executor: one per operand (a switch compares each lane
+  // with every case, a phi looks through its pairs) and one per value it reads or writes
+  // (an access chain only computes an offset). Summed per block for the executor's work
+  // limit, which stops a batch whose loops never end.
+  uint64_t instruction_cost(const Instruction& in, const std::vector<uint32_t>& ids) const {
+    const auto value = [&](uint32_t id) {
+      const Type& t = m_.types[m_.type_of[id]];
+      return t.kind == Type::Kind::pointer ? 0 : elements_[m_.type_of[id]];
+    };
+    const auto ops = m_.operands_of(in);
+    uint64_t cost = 1 + ops.size();
+    switch (Op(in.op)) {
+      case Op::OpAccessChain: case Op::OpInBoundsAccessChain: case Op::OpPtrAccessChain: break;
+      case Op::OpLoad: case Op::OpVariable: cost += elements_of(in.result_type); break;
+      case Op::OpStore: cost += ops.size() > 1 ? value(ops[1]) : 0; break;
+      case Op::OpCopyMemory: cost += ops.empty() ? 0 : elements_of(m_.type_of[ops[0]]); break;
+      default:
+        if (in.result_type && m_.types[in.result_type].kind != Type::Kind::pointer) cost += elements_[in.result_type];
+        for (uint32_t id : ids) cost += value(id);
+        break;
+    }
+    return std::min(cost, saturated);
+  }
+
+  // The values one invocation holds (every result, parameter and variable: the executor
+  // keeps them all for every lane of a batch) within max_invocation_values, and each
+  // block's cost.
+  TwinResult<void> check_limits() {
+    uint64_t held = 0;
+    for (uint32_t var : m_.variables) held += elements_of(m_.type_of[var]);
+    for (auto& [id, f] : m_.functions) {
+      for (uint32_t p : f.parameters) held += elements_of(m_.type_of[p]);
+      for (Block& b : f.blocks)
+        for (uint32_t i = b.first; i <= b.last && i < m_.instructions.size(); ++i) {
+          const Instruction& in = m_.instructions[i];
+          if (in.result && in.result_type) held += elements_of(in.result_type);
+          b.cost = std::min(b.cost + instruction_cost(in, operand_ids_[i]), saturated);
+        }
+      held = std::min(held, saturated);
+    }
+    if (held > max_invocation_values)
+      return std::unexpected(TwinError{.message = "the shader holds more than " + std::to_string(max_invocation_values) +
+                                                  " values per invocation (its variables and results)"});
+    return {};
   }
 
   TwinResult<void> global(Op op, std::span<const uint32_t> w) {
@@ -219,6 +327,14 @@ class Decoder {
       t.kind = kind;
       return t;
     };
+    switch (op) {   // counted before a constant's values are built
+      case Op::OpConstantTrue: case Op::OpSpecConstantTrue: case Op::OpConstantFalse: case Op::OpSpecConstantFalse:
+      case Op::OpConstant: case Op::OpSpecConstant: case Op::OpConstantComposite: case Op::OpSpecConstantComposite:
+      case Op::OpConstantNull: case Op::OpUndef:
+        if (auto ok = charge_constant(w[0]); !ok) return ok;
+        break;
+      default: break;
+    }
     switch (op) {
       case Op::OpTypeVoid: type(K::void_); break;
       case Op::OpTypeBool: type(K::boolean); break;
@@ -289,7 +405,16 @@ class Decoder {
         m_.variables.push_back(w[1]);
         if (w.size() > 3) m_.variable_initializer[w[1]] = w[3];
         break;
-      case Op::OpCapability: case Op::OpExtension: case Op::OpMemoryModel: case Op::OpModuleProcessed:
+      case Op::OpCapability: {
+        // The executor knows each pointer id's variable and offset when it computes it: it
+        // cannot follow pointers chosen (OpSelect, OpPhi), stored or loaded at run time.
+        const auto capability = spv::Capability(w[0]);
+        if (capability == spv::Capability::VariablePointers || capability == spv::Capability::VariablePointersStorageBuffer ||
+            capability == spv::Capability::PhysicalStorageBufferAddresses)
+          return std::unexpected(TwinError{.message = "the twin does not support variable or physical pointers"});
+        break;
+      }
+      case Op::OpExtension: case Op::OpMemoryModel: case Op::OpModuleProcessed:
       case Op::OpSourceExtension:
       case Op::OpMemberName: case Op::OpDecorationGroup: case Op::OpExecutionModeId:
         break;
@@ -341,6 +466,9 @@ class Decoder {
   }
 
   Module& m_;
+  std::vector<uint64_t> elements_;                 // by type id
+  std::vector<std::vector<uint32_t>> operand_ids_;   // by instruction: its id operands
+  uint64_t constant_values_ = 0;
   uint32_t last_source_file_ = 0;
   std::map<uint32_t, std::string> sources_;
   std::vector<RawInstruction> member_decorations_;
@@ -389,7 +517,10 @@ TwinResult<std::shared_ptr<const Module>> load_module(std::span<const uint32_t> 
     return SPV_SUCCESS;
   };
   const auto on_instruction = [](void* user, const spv_parsed_instruction_t* p) -> spv_result_t {
-    static_cast<Collected*>(user)->raw.push_back({p->opcode, std::vector<uint32_t>(p->words + 1, p->words + p->num_words)});
+    RawInstruction r{p->opcode, std::vector<uint32_t>(p->words + 1, p->words + p->num_words), {}};
+    for (uint16_t i = 0; i < p->num_operands; ++i)
+      if (is_id(p->operands[i].type)) r.ids.push_back(uint16_t(p->operands[i].offset - 1));
+    static_cast<Collected*>(user)->raw.push_back(std::move(r));
     return SPV_SUCCESS;
   };
   const spv_result_t parsed =
@@ -399,6 +530,9 @@ TwinResult<std::shared_ptr<const Module>> load_module(std::span<const uint32_t> 
   spvDiagnosticDestroy(diagnostic);
   spvContextDestroy(context);
   if (!parse_error.empty()) return std::unexpected(TwinError{.message = "spvBinaryParse: " + parse_error});
+
+  // A compiler's ids are dense (each takes two words or more): those modules keep theirs.
+  if (collected.bound > spirv.size()) collected.bound = compact_ids(collected.raw);
 
   auto module = std::make_shared<Module>();
   Module& m = *module;

@@ -65,6 +65,7 @@ struct Block {
   uint32_t first = 0, last = 0;   // instructions [first, last]; last is the terminator
   uint32_t merge = 0;             // OpSelectionMerge / OpLoopMerge target, 0 = none
   uint32_t continue_target = 0;   // loops only
+  uint64_t cost = 0;              // what one pass costs, in values read and written (Executor's work limit)
 };
 
 struct Function {

@@ -401,8 +401,9 @@ TwinResult<void> BasicExecutor<Real>::execute_ext(uint32_t index, const Lanes& l
       for (uint16_t l : lanes) {
         uint32_t packed = 0;
         for (uint32_t s = 0; s < 4; ++s) {
-          const Real v = snorm ? round(std::clamp<Real>(a.at(s, l), Real(-1.0), Real(1.0)) * 127.0)
-                                  : round(std::clamp<Real>(a.at(s, l), Real(0.0), Real(1.0)) * 255.0);
+          // fmax/fmin, not clamp: NaN packs as 0 instead of reaching an undefined int conversion.
+          const Real v = snorm ? round(fmin(fmax(a.at(s, l), Real(-1.0)), Real(1.0)) * 127.0)
+                                  : round(fmin(fmax(a.at(s, l), Real(0.0)), Real(1.0)) * 255.0);
           packed |= (uint32_t(int32_t(v)) & 0xff) << (8 * s);
         }
         d[l] = packed;
@@ -427,8 +428,8 @@ TwinResult<void> BasicExecutor<Real>::execute_ext(uint32_t index, const Lanes& l
       for (uint16_t l : lanes) {
         uint32_t packed = 0;
         for (uint32_t s = 0; s < 2; ++s) {
-          const Real v = snorm ? round(std::clamp<Real>(a.at(s, l), Real(-1.0), Real(1.0)) * 32767.0)
-                                  : round(std::clamp<Real>(a.at(s, l), Real(0.0), Real(1.0)) * 65535.0);
+          const Real v = snorm ? round(fmin(fmax(a.at(s, l), Real(-1.0)), Real(1.0)) * 32767.0)
+                                  : round(fmin(fmax(a.at(s, l), Real(0.0)), Real(1.0)) * 65535.0);   // as above
           packed |= (uint32_t(int32_t(v)) & 0xffff) << (16 * s);
         }
         d[l] = packed;

@@ -49,7 +49,7 @@ void leaves(const Module& m, uint32_t type_id, int location, int component, Inte
     case K::structure: {
       int at = location;
       for (size_t i = 0; i < t.members.size(); ++i) {
-        if (t.member_location[i] >= 0) at = t.member_location[i];
+        if (t.member_location[i] >= 0) at = std::min(t.member_location[i], max_locations);
         const Interpolation member{.flat = interpolation.flat || t.member_flat[i] != 0,
                                    .noperspective = interpolation.noperspective || t.member_noperspective[i] != 0};
         leaves(m, t.members[i], at, 0, member, slot + t.member_slots[i], out, at);
@@ -87,8 +87,10 @@ std::vector<Interface> interface_of(const Module& m, spv::StorageClass storage) 
           i.member_builtins.push_back({t.member_slots[k], m.types[t.members[k]].slots, t.member_builtin[k]});
     if (d.location >= 0) {
       int next = 0;
-      leaves(m, pointer.element, d.location, d.component, {.flat = d.flat, .noperspective = d.noperspective}, 0, i.parts,
-             next);
+      // Parts at max_locations or beyond are not passed on anyway; the cap keeps the next
+      // locations' arithmetic from overflowing (Location may be any 32-bit value).
+      leaves(m, pointer.element, std::min(d.location, max_locations), d.component,
+             {.flat = d.flat, .noperspective = d.noperspective}, 0, i.parts, next);
     }
     out.push_back(std::move(i));
   }
@@ -111,6 +113,7 @@ template <typename Real>
 TwinResult<VertexResults<Real>> run_vertices(const DrawInput& input) {
   const Module& m = *input.program.vertex;
   BasicExecutor<Real> executor(m, input.resources, input.precision);
+  executor.limit_work(input.work_limit);
   const auto inputs = interface_of(m, spv::StorageClass::Input);
   const auto outputs = interface_of(m, spv::StorageClass::Output);
   VertexResults<Real> results;
@@ -431,6 +434,11 @@ TwinResult<Program> load_program(std::span<const uint32_t> vertex_spirv, const s
   if (!vertex) return std::unexpected(TwinError{.message = "vertex stage: " + vertex.error().to_string()});
   auto fragment = load_module(fragment_spirv, fragment_entry);
   if (!fragment) return std::unexpected(TwinError{.message = "fragment stage: " + fragment.error().to_string()});
+  // Either would run, wrongly: a vertex shader per pixel reads no varyings, its position is lost.
+  if (spv::ExecutionModel((*vertex)->execution_model) != spv::ExecutionModel::Vertex)
+    return std::unexpected(TwinError{.message = "vertex stage: '" + vertex_entry + "' is not a vertex shader"});
+  if (spv::ExecutionModel((*fragment)->execution_model) != spv::ExecutionModel::Fragment)
+    return std::unexpected(TwinError{.message = "fragment stage: '" + fragment_entry + "' is not a fragment shader"});
   return Program{std::move(*vertex), std::move(*fragment)};
 }
 
@@ -448,6 +456,7 @@ TwinResult<TwinImage> draw(const DrawInput& input) {
   std::vector<uint8_t> failed(threads, 0);
   auto work = [&](unsigned t) {
     Executor executor(stage.module(), input.resources, input.precision);
+    executor.limit_work(input.work_limit);
     std::vector<FragmentLane> lanes;
     lanes.reserve(batch_lanes + 16);
     auto flush = [&]() -> bool {
@@ -503,6 +512,7 @@ TwinResult<void> run_pixel(const DrawInput& input, int x, int y, Observer* obser
       mine.push_back(l);
     }
   BasicExecutor<Real> executor(stage.module(), input.resources, input.precision);
+  executor.limit_work(input.work_limit);
   if (observer) executor.observe(observer, lane);
   return stage.run(executor, mine, image);
 }

@@ -48,6 +48,7 @@ struct DrawInput {
   Precision precision = Precision::exact;
   Cull cull = Cull::none;
   unsigned threads = 0;                // 0: every core
+  uint64_t work_limit = default_work_limit;   // per batch of invocations (Executor.h)
 };
 
 struct TwinImage {
