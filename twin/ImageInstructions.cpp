@@ -12,45 +12,6 @@
 
 namespace twin {
 
-// Unqualified math: std's for double, Boost's for WideReal (WideReal.h).
-using std::sin;
-using std::cos;
-using std::tan;
-using std::asin;
-using std::acos;
-using std::atan;
-using std::sinh;
-using std::cosh;
-using std::tanh;
-using std::asinh;
-using std::acosh;
-using std::atanh;
-using std::atan2;
-using std::pow;
-using std::exp;
-using std::log;
-using std::exp2;
-using std::log2;
-using std::sqrt;
-using std::fabs;
-using std::floor;
-using std::ceil;
-using std::trunc;
-using std::round;
-using std::nearbyint;
-using std::fmod;
-using std::fmin;
-using std::fmax;
-using std::fma;
-using std::ldexp;
-using std::frexp;
-using std::modf;
-using std::isnan;
-using std::isinf;
-using std::isfinite;
-using std::signbit;
-using std::abs;
-using std::copysign;
 namespace {
 
 using spv::Op;

@@ -11,8 +11,11 @@ std::vector<std::string> twin_lines(const CellResult& r) {
   const CellResult::TwinFigures& t = *r.twin;
   if (!t.error.empty()) return {fmt::format("twin ({}): not drawn: {}", t.precision, t.error)};
   using markup::sci;
-  std::string line = fmt::format("twin ({}): the render is {} from its shader's twin (worst at {},{})", t.precision,
-                                 sci(t.max_abs), t.worst_x, t.worst_y);
+  std::string line = fmt::format("twin ({}): the render is {} from its shader's twin (worst at {},{}{})", t.precision,
+                                 sci(t.max_abs), t.worst_x, t.worst_y,
+                                 t.self_error >= 0 ? "; the twin's own error there, against quad precision, " +
+                                                         sci(t.self_error)
+                                                   : std::string());
   if (t.reference_max_abs >= 0) {
     line += fmt::format(", the twin {} from the reference", sci(t.reference_max_abs));
     // Which half of the error is over the tolerance says whose it is.
@@ -22,7 +25,6 @@ std::vector<std::string> twin_lines(const CellResult& r) {
     else if (r.status == CellStatus::fail && arithmetic && !formula)
       line += ": fp32 or the driver (the exact shader passes)";
   }
-  if (t.self_error >= 0) line += fmt::format(" (the double twin's own error there, against quad precision: {})", sci(t.self_error));
   std::vector<std::string> lines{line};
   if (!t.nonfinite_origin.empty()) lines.push_back("NaN/Inf first made at " + t.nonfinite_origin);
   return lines;
