@@ -125,7 +125,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   static const std::vector<std::byte> zeros(4096);
   const twin::Module& m = *program->fragment;
   twin::BoundResources resources;
-  resources.push_constants = zeros;
+  resources.push_constants = {zeros, {}};
   for (uint32_t var : m.variables) {
     const twin::Type& pointer = m.types[m.type_of[var]];
     if (pointer.kind != K::pointer) continue;
@@ -134,7 +134,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const std::pair<uint32_t, uint32_t> key{uint32_t(d.set), uint32_t(d.binding)};
     switch (spv::StorageClass(pointer.storage)) {
       case spv::StorageClass::Uniform: case spv::StorageClass::StorageBuffer: case spv::StorageClass::PushConstant:
-        resources.buffers[key] = zeros;
+        resources.buffers[key] = {zeros, {}};
         break;
       case spv::StorageClass::UniformConstant:
         if (opaque(m, pointer.element) && !resources.handles.count(key)) {
