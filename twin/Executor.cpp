@@ -114,7 +114,6 @@ void BasicExecutor<Real>::Arrivals::add(uint32_t label, const Lanes& lanes) {
 template <typename Real>
 BasicExecutor<Real>::BasicExecutor(const Module& module, const BoundResources& resources, Precision precision)
     : m_(module), resources_(resources), precision_(precision) {
-  register_base_.assign(m_.bound, 0);
   pointers_.resize(m_.bound);
   constants_.resize(m_.bound);
   for (uint32_t id = 0; id < m_.bound; ++id) constants_[id].assign(m_.constants[id].begin(), m_.constants[id].end());
@@ -131,7 +130,8 @@ BasicExecutor<Real>::BasicExecutor(const Module& module, const BoundResources& r
     if (in.result && in.result_type) add_register(in.result, in.result_type);
   for (const auto& [id, f] : m_.functions)
     for (uint32_t p : f.parameters) add_register(p, m_.type_of[p]);
-  register_base_ = std::move(slot_offset);   // scaled by the lane count in run()
+  register_slot_ = std::move(slot_offset);
+  register_base_ = register_slot_;   // scaled by the lane count in begin()
   for (uint32_t var : m_.variables) pointers_[var] = Pointer{.variable = var};
 
   rounding_.assign(m_.instructions.size(), 0);
@@ -228,6 +228,11 @@ TwinResult<void> BasicExecutor<Real>::begin(uint32_t lanes, bool quads) {
   quads_ = quads;
   // Registers are written before they are read (SSA), so a new batch need not clear them.
   if (registers_.size() < size_t(register_slots_) * lanes) registers_.resize(size_t(register_slots_) * lanes);
+  // Register r's slot s of lane l is at (slot_r + s) * lanes + l.
+  if (lanes != based_lanes_) {
+    for (size_t id = 0; id < register_base_.size(); ++id) register_base_[id] = register_slot_[id] * lanes;
+    based_lanes_ = lanes;
+  }
   predecessor_.assign(lanes, 0);
   discarded_.assign(lanes, 0);
   for (uint32_t var : m_.variables) {
@@ -275,23 +280,17 @@ TwinResult<void> BasicExecutor<Real>::begin(uint32_t lanes, bool quads) {
       for (uint32_t s = 0; s < t.slots; ++s)
         std::fill_n(mem.slots.begin() + std::ptrdiff_t(s) * lanes, lanes, m_.constants[init][s]);
   }
-  // Registers are addressed as base * lanes + slot * lanes + lane.
   return {};
 }
 
 template <typename Real>
 TwinResult<void> BasicExecutor<Real>::run() {
-  // register_base_ holds slot offsets; scale them once per lane count.
-  std::vector<uint32_t> saved = register_base_;
-  for (uint32_t& base : register_base_) base *= lanes_;
   Lanes all(lanes_);
   for (uint32_t l = 0; l < lanes_; ++l) all[l] = uint16_t(l);
   const Function& entry = m_.functions.at(m_.entry_function);
   work_ = 0;
   Arrivals arrivals;
-  auto result = run_region(entry, entry.blocks.front().label, std::move(all), {}, arrivals);
-  register_base_ = std::move(saved);
-  return result;
+  return run_region(entry, entry.blocks.front().label, std::move(all), {}, arrivals);
 }
 
 template <typename Real>

@@ -129,7 +129,9 @@ class BasicExecutor {
   Precision precision_;
   uint32_t lanes_ = 0;
   bool quads_ = false;
-  std::vector<uint32_t> register_base_;   // by id
+  std::vector<uint32_t> register_slot_;   // by id: where its slots start, per lane
+  std::vector<uint32_t> register_base_;   // by id: register_slot_ * the batch's lanes
+  uint32_t based_lanes_ = 1;              // the lanes register_base_ is scaled for
   std::vector<Real> registers_;
   std::vector<std::vector<Real>> constants_;   // Module::constants in this executor's type
   std::vector<Pointer> pointers_;         // by id

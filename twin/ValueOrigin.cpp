@@ -43,11 +43,11 @@ class NonFiniteSearch final : public Observer {
     const Instruction& in = m_.instructions[index];
     seen_[in.result].assign(values.begin(), values.end());
     if (found_) return;
-    const Type& t = m_.types[in.result_type];
-    const bool floating = t.kind == Type::Kind::floating || (t.kind != Type::Kind::structure && t.element &&
-                                                            m_.types[t.element].kind == Type::Kind::floating) ||
-                          (t.kind == Type::Kind::matrix);
-    if (!floating) return;
+    // A float scalar, vector, matrix or array of them: what can hold a NaN.
+    const Type* t = &m_.types[in.result_type];
+    while (t->kind == Type::Kind::vector || t->kind == Type::Kind::matrix || t->kind == Type::Kind::array)
+      t = &m_.types[t->element];
+    if (t->kind != Type::Kind::floating) return;
     for (double v : values)
       if (!std::isfinite(v)) {
         found_ = index;

@@ -111,8 +111,7 @@ Result<ReferenceVsDrivers> time_reference_against_drivers(const ComparedCell& ce
     out.draws.push_back(std::move(d));
   }
   // lavapipe first, then llvmpipe's paths in the runner's order, the twin last.
-  std::ranges::stable_partition(out.draws, [](const DriverDraw& d) { return d.backend != "twin-double"; });
-  std::ranges::stable_partition(out.draws, [](const DriverDraw& d) { return d.backend == "vulkan"; });
+  std::ranges::stable_sort(out.draws, {}, [](const DriverDraw& d) { return d.backend == "vulkan" ? 0 : d.backend == "gl" ? 1 : 2; });
   const auto lavapipe = std::ranges::find(out.draws, std::string("vulkan"), &DriverDraw::backend);
   const auto twin = std::ranges::find(out.draws, std::string("twin-double"), &DriverDraw::backend);
   if (lavapipe != out.draws.end() && twin != out.draws.end() && lavapipe->wall.median > 0)

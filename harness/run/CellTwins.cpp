@@ -60,61 +60,68 @@ CellTwins::CellTwins(const std::string& precision) : precision_(precision), slot
   slot_.backend = std::unique_ptr<Backend>(std::move(renderer));
 }
 
-const CellTwins::Drawn& CellTwins::twin_of(GroupDrawer& drawer, const Variant& variant, const PlannedCell& cell,
-                                           const CellResult& row) {
-  const auto key = std::pair{&variant, cell.language};
-  auto it = drawn_.find(key);
-  if (it != drawn_.end()) return it->second;
+CellTwins::Drawn& CellTwins::twin_of(GroupDrawer& drawer, const Variant& variant, const PlannedCell& cell,
+                                     const CellResult& row, const ReferenceImage* reference) {
+  const Key key{&variant, cell.language};
+  if (auto it = drawn_.find(key); it != drawn_.end()) return it->second;
   CellResult scratch = row;
   const PlannedCell twin_cell{cell.language, &slot_, ShaderPath::spirv};
-  Drawn d;
-  d.image = drawer.draw(variant, twin_cell, TimingRequest{.warmup = 0, .runs = 0}, scratch);
-  d.ms = scratch.time_ms["draw"];
+  const Result<Image> image = drawer.draw(variant, twin_cell, TimingRequest{.warmup = 0, .runs = 0}, scratch);
   last_drawn_ = key;
+  Drawn d;
+  d.ms = scratch.time_ms["draw"];
+  if (!image) {
+    d.image = std::unexpected(image.error());
+  } else {
+    d.image = as_reference_image(*image);
+    d.classes = classify_pixels(*d.image);
+    if (reference && reference->width == image->width && reference->height == image->height)
+      d.reference_max_abs = exact_difference(*image, *reference, classify_pixels(*reference)).max_abs;
+  }
   return drawn_.emplace(key, std::move(d)).first->second;
+}
+
+bool CellTwins::make_current(GroupDrawer& drawer, const Variant& variant, const PlannedCell& cell,
+                             const CellResult& row) {
+  const Key key{&variant, cell.language};
+  if (last_drawn_ == key) return true;
+  CellResult scratch = row;
+  const PlannedCell twin_cell{cell.language, &slot_, ShaderPath::spirv};
+  if (!drawer.draw(variant, twin_cell, TimingRequest{.warmup = 0, .runs = 0}, scratch)) return false;
+  last_drawn_ = key;
+  return true;
 }
 
 CellResult::TwinFigures CellTwins::figures(GroupDrawer& drawer, const Variant& variant, const PlannedCell& cell,
                                            const CellResult& row, const Image& render, const ReferenceImage* reference) {
   CellResult::TwinFigures f{.precision = precision_};
-  const Drawn& drawn = twin_of(drawer, variant, cell, row);
+  Drawn& drawn = twin_of(drawer, variant, cell, row, reference);
   f.ms = drawn.ms;
   if (!drawn.image) {
     f.error = drawn.image.error().to_string();
     return f;
   }
-  const ReferenceImage twin_image = as_reference_image(*drawn.image);
-  const std::vector<PixelClass> twin_classes = classify_pixels(twin_image);
+  const ReferenceImage& twin_image = *drawn.image;
   const ExactDifference own =
-      exact_difference(render, twin_image, twin_classes, {row.interior_threshold, row.interior_threshold_rel});
+      exact_difference(render, twin_image, drawn.classes, {row.interior_threshold, row.interior_threshold_rel});
   f.max_abs = own.max_abs;
   f.rmse = own.rmse;
   f.share = own.tolerance_share;
   f.worst_x = own.worst_x;
   f.worst_y = own.worst_y;
-  if (reference && reference->width == twin_image.width && reference->height == twin_image.height)
-    f.reference_max_abs = exact_difference(*drawn.image, *reference, classify_pixels(*reference)).max_abs;
+  f.reference_max_abs = drawn.reference_max_abs;
 
-  // The renderer's last draw must be this program's to trace its pixels.
-  const auto key = std::pair{&variant, cell.language};
-  const auto retrace = [&]() -> bool {
-    if (last_drawn_ == key) return true;
-    drawn_.erase(key);
-    return twin_of(drawer, variant, cell, row).image.has_value();
-  };
-  // The double twin checked against itself in quad precision where the render is furthest
-  // from it, once per twin image (every cell of a variant and language shares it).
-  if (precision_ == "double" && own.worst_x >= 0) {
-    auto& checked = self_errors_[key];
-    if (!checked && retrace())
-      if (auto wide = renderer_->wide_pixel(own.worst_x, own.worst_y)) {
-        const size_t at = (size_t(own.worst_y) * twin_image.width + own.worst_x) * 4;
-        double e = 0;
-        for (int c = 0; c < 3; ++c) e = std::max(e, std::abs(twin_image.rgba[at + c] - (*wide)[size_t(c)]));
-        checked = e;
-      }
-    if (checked) f.self_error = *checked;
-  }
+  const auto retrace = [&] { return make_current(drawer, variant, cell, row); };
+  // The double twin checked against itself in quad precision where the first cell's render
+  // is furthest from it, once per twin image (every cell of a variant and language shares it).
+  if (precision_ == "double" && own.worst_x >= 0 && !drawn.self_error && retrace())
+    if (auto wide = renderer_->wide_pixel(own.worst_x, own.worst_y)) {
+      const size_t at = (size_t(own.worst_y) * twin_image.width + own.worst_x) * 4;
+      double e = 0;
+      for (int c = 0; c < 3; ++c) e = std::max(e, std::abs(twin_image.rgba[at + c] - (*wide)[size_t(c)]));
+      drawn.self_error = e;
+    }
+  if (drawn.self_error) f.self_error = *drawn.self_error;
   if (auto pixel = first_nonfinite_pixel(render); pixel && retrace()) {
     auto origin = renderer_->nonfinite_origin(pixel->first, pixel->second);
     if (!origin) f.nonfinite_origin = "the twin could not trace pixel " + fmt::format("({}, {})", pixel->first, pixel->second) +

@@ -28,28 +28,33 @@ class CellTwins {
  public:
   explicit CellTwins(const std::string& precision);   // "" = off
   bool enabled() const { return renderer_ != nullptr; }
-  void begin_group() {
-    drawn_.clear();
-    self_errors_.clear();
-  }
+  void begin_group() { drawn_.clear(); }
   // `row`: the cell's result so far (its identity names the twin's draw steps);
   // `reference`: the image the cell is judged against, null when it has none.
   CellResult::TwinFigures figures(GroupDrawer& drawer, const Variant& variant, const PlannedCell& cell,
                                   const CellResult& row, const Image& render, const ReferenceImage* reference);
 
  private:
+  using Key = std::pair<const Variant*, Language>;
+  // What every cell of one twin image shares, computed once.
   struct Drawn {
-    Result<Image> image = fail(ErrorStage::twin, "not drawn");
+    Result<ReferenceImage> image = fail(ErrorStage::twin, "not drawn");   // at the twin's own precision
+    std::vector<PixelClass> classes;   // classify_pixels(image)
     double ms = 0;
+    double reference_max_abs = -1;     // the twin against the group's reference
+    std::optional<double> self_error;  // the double twin against quad precision (once checked)
   };
-  const Drawn& twin_of(GroupDrawer& drawer, const Variant& variant, const PlannedCell& cell, const CellResult& row);
+  Drawn& twin_of(GroupDrawer& drawer, const Variant& variant, const PlannedCell& cell, const CellResult& row,
+                 const ReferenceImage* reference);
+  // Makes the renderer's last draw the one of `key`, whose pixels are then traced; false
+  // when that draw fails.
+  bool make_current(GroupDrawer& drawer, const Variant& variant, const PlannedCell& cell, const CellResult& row);
 
   std::string precision_;
   BackendSlot slot_;
   TwinRenderer* renderer_ = nullptr;
-  std::map<std::pair<const Variant*, Language>, Drawn> drawn_;
-  std::map<std::pair<const Variant*, Language>, std::optional<double>> self_errors_;   // the double twin's own, per image
-  std::optional<std::pair<const Variant*, Language>> last_drawn_;   // what the renderer's last draw is
+  std::map<Key, Drawn> drawn_;
+  std::optional<Key> last_drawn_;   // what the renderer's last draw is
 };
 
 }  // namespace shaderbed

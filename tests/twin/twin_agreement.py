@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The shader's twin agrees with the drivers and with the models (issue: the shader's twin).
 
-usage: twin_agreement.py float|double SOURCE_DIR SHADERBED_BINARY
+usage: twin_agreement.py float|double|verdicts SOURCE_DIR SHADERBED_BINARY
 
 float:  `run --backend vulkan --twin float` over the library, the realworld, differential and
         precision corpora: every lavapipe cell is within its own interior tolerance of its
@@ -12,7 +12,13 @@ double: `run --backend vulkan --twin double` over the library: on every per-pixe
         (reference/) to 1e-9, or to the bound of a difference of form documented in
         docs/errata.md ("The twin against the models"). A third implementation checks both.
         And the double twin is within 1e-12 of the same shader run in quad precision (Boost).
+verdicts: the double twin gives the GPU's verdicts: the differential corpus judged against
+        its originals' double twins (each case's reference rewritten to `twin = "double"`)
+        passes and fails the same cells, with the same first convention fit, as against the
+        originals drawn on lavapipe (why the twin is the default, docs/differential.md); and
+        `--backend twin-double` passes and fails the same realworld cells as lavapipe.
 """
+import re
 import json
 import os
 import subprocess
@@ -122,10 +128,78 @@ def check_double(source, binary, scratch):
     return failures
 
 
+def verdict(cell):
+    fits = [e["name"] for e in cell.get("explanations", []) if e.get("fits")]
+    return cell["status"], fits[0] if fits else ""
+
+
+def twin_referenced_cases(source, scratch):
+    """The differential cases with `twin = "double"` for their GPU original, in a folder of
+    their own; the shader and texture paths they name are made absolute."""
+    root = os.path.abspath(os.path.join(source, "tests", "differential"))
+    out = os.path.join(scratch, "twin-referenced", "cases")
+    os.makedirs(out)
+    count = 0
+    for name in sorted(os.listdir(os.path.join(root, "cases"))):
+        text = open(os.path.join(root, "cases", name), encoding="utf-8").read()
+        rewritten = re.sub(r'backend = "vulkan", path = "spirv"', 'twin = "double"', text)
+        if rewritten == text:
+            continue   # an original on GL: no twin stands in for the native GLSL path
+        rewritten = re.sub(r'"([^"]+)"', lambda m: '"' + os.path.join(root, m.group(1)) + '"'
+                           if os.path.isfile(os.path.join(root, m.group(1))) else m.group(0), rewritten)
+        open(os.path.join(out, name), "w", encoding="utf-8").write(rewritten)
+        count += 1
+    return out, count
+
+
+def check_verdicts(source, binary, scratch):
+    failures = []
+    twin_dir, count = twin_referenced_cases(source, scratch)
+    gpu = {c["id"]: c for c in run_cells(binary, os.path.join(source, "tests/differential/cases"),
+                                          os.path.join(scratch, "gpu-original.json"))}
+    twin = run_cells(binary, twin_dir, os.path.join(scratch, "twin-original.json"))
+    same = 0
+    for cell in twin:
+        other = gpu.get(cell["id"])
+        if other is None:
+            failures.append(f"{cell['id']}: no such cell with the GPU original")
+        elif verdict(cell) != verdict(other):
+            failures.append(f"{cell['id']}: {verdict(other)} against the GPU original, {verdict(cell)} against its twin")
+        else:
+            same += 1
+    print(f"differential corpus, {count} cases with a Vulkan original: {same} of {len(twin)} cells get the same "
+          f"verdict and first convention fit against the original's double twin")
+    if len(twin) < 100:
+        failures.append(f"only {len(twin)} cells were judged against a twin")
+
+    cells = run_cells(binary, os.path.join(source, "tests/realworld/cases"), os.path.join(scratch, "realworld.json"),
+                      ["--backend", "vulkan,twin-double"])
+    by_key = {}
+    for cell in cells:
+        by_key.setdefault((cell["case"], cell["variant"], cell["language"], cell["shape"]), {})[cell["backend"]] = cell
+    pairs = [v for v in by_key.values() if len(v) == 2]
+    differing = [v for v in pairs if v["vulkan"]["status"] != v["twin-double"]["status"]]
+    for v in differing:
+        failures.append(f"{v['vulkan']['id']}: {v['vulkan']['status']} on lavapipe, {v['twin-double']['status']} "
+                        "on the double twin")
+    print(f"realworld corpus: the double twin's verdict equals lavapipe's on {len(pairs) - len(differing)} of "
+          f"{len(pairs)} case x variant x language x shape")
+    return failures
+
+
+def run_cells(binary, cases_dir, out, extra=()):
+    args = [binary, "run", "--size", SIZE, "--json", out, "--quiet", "--cases-dir", cases_dir, *extra]
+    done = subprocess.run(args, capture_output=True, text=True)
+    if not os.path.exists(out):
+        raise SystemExit(f"{' '.join(args)} wrote no results (exit {done.returncode}):\n{done.stderr[-2000:]}")
+    return json.load(open(out))["results"]
+
+
 def main():
     mode, source, binary = sys.argv[1], sys.argv[2], sys.argv[3]
     with tempfile.TemporaryDirectory(prefix="twin-agreement-") as scratch:
-        failures = check_float(source, binary, scratch) if mode == "float" else check_double(source, binary, scratch)
+        check = {"float": check_float, "double": check_double, "verdicts": check_verdicts}[mode]
+        failures = check(source, binary, scratch)
     if failures:
         print("\n".join(["FAILED:"] + failures))
         return 1

@@ -1,19 +1,14 @@
 #include "backends/twin/TwinRenderer.h"
 
-#include <chrono>
 #include <cstring>
 
 #include "backends/ProgramBindings.h"
 #include "backends/VertexInputs.h"
+#include "core/Elapsed.h"
 #include "twin/TwinDraw.h"
 
 namespace shaderbed {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 Error twin_error(const twin::TwinError& e) {
   return Error{.message = e.message, .file = e.file, .line = e.line, .stage = ErrorStage::twin};
