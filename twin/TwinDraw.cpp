@@ -6,6 +6,7 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <functional>
 #include <thread>
 
 #include <glm/glm.hpp>
@@ -109,6 +110,40 @@ struct VertexResults {
 template <typename Real>
 Real stage_round(Precision p, Real x) { return p == Precision::exact ? x : Real(round_to_float(double(x))); }
 
+// A batch of the vertex stage: vertices first .. first + n - 1, their inputs filled from
+// the streams (VertexIndex counted, other built-ins 0).
+template <typename Real>
+TwinResult<void> begin_vertices(BasicExecutor<Real>& executor, const DrawInput& input,
+                                const std::vector<Interface>& inputs, uint32_t first, uint32_t n) {
+  const Module& m = *input.program.vertex;
+  if (auto ok = executor.begin(n, false); !ok) return std::unexpected(ok.error());
+  for (const Interface& i : inputs) {
+    Real* slots = executor.input(i.variable);
+    if (i.builtin == int(spv::BuiltIn::VertexIndex) || i.builtin == int(spv::BuiltIn::VertexId)) {
+      for (uint32_t l = 0; l < n; ++l) slots[l] = first + l;
+      continue;
+    }
+    if (i.builtin >= 0) continue;   // InstanceIndex and the like: 0
+    for (const Leaf& leaf : i.parts) {
+      const auto stream = std::find_if(input.streams.begin(), input.streams.end(),
+                                       [&](const VertexStream& s) { return int(s.location) == leaf.location; });
+      if (stream == input.streams.end())
+        return std::unexpected(TwinError{.message = "vertex input " + m.name_of(i.variable) + " (location " +
+                                                    std::to_string(leaf.location) + ") has no vertex stream"});
+      // Four values per vertex, or the reads below would run past the stream.
+      if (stream->values.size() < size_t(input.vertex_count) * 4)
+        return std::unexpected(TwinError{.message = "the vertex stream of " + m.name_of(i.variable) + " (location " +
+                                                    std::to_string(leaf.location) + ") has " +
+                                                    std::to_string(stream->values.size()) + " values, not 4 for each of " +
+                                                    std::to_string(input.vertex_count) + " vertices"});
+      for (uint32_t k = 0; k < leaf.count; ++k)
+        for (uint32_t l = 0; l < n; ++l)
+          slots[(leaf.slot + k) * n + l] = stream->values[size_t(first + l) * 4 + leaf.component + k];
+    }
+  }
+  return {};
+}
+
 template <typename Real>
 TwinResult<VertexResults<Real>> run_vertices(const DrawInput& input) {
   const Module& m = *input.program.vertex;
@@ -122,31 +157,7 @@ TwinResult<VertexResults<Real>> run_vertices(const DrawInput& input) {
   bool has_position = false;
   for (uint32_t first = 0; first < input.vertex_count; first += batch_lanes) {
     const uint32_t n = std::min(batch_lanes, input.vertex_count - first);
-    if (auto ok = executor.begin(n, false); !ok) return std::unexpected(ok.error());
-    for (const Interface& i : inputs) {
-      Real* slots = executor.input(i.variable);
-      if (i.builtin == int(spv::BuiltIn::VertexIndex) || i.builtin == int(spv::BuiltIn::VertexId)) {
-        for (uint32_t l = 0; l < n; ++l) slots[l] = first + l;
-        continue;
-      }
-      if (i.builtin >= 0) continue;   // InstanceIndex and the like: 0
-      for (const Leaf& leaf : i.parts) {
-        const auto stream = std::find_if(input.streams.begin(), input.streams.end(),
-                                         [&](const VertexStream& s) { return int(s.location) == leaf.location; });
-        if (stream == input.streams.end())
-          return std::unexpected(TwinError{.message = "vertex input " + m.name_of(i.variable) + " (location " +
-                                                      std::to_string(leaf.location) + ") has no vertex stream"});
-        // Four values per vertex, or the reads below would run past the stream.
-        if (stream->values.size() < size_t(input.vertex_count) * 4)
-          return std::unexpected(TwinError{.message = "the vertex stream of " + m.name_of(i.variable) + " (location " +
-                                                      std::to_string(leaf.location) + ") has " +
-                                                      std::to_string(stream->values.size()) + " values, not 4 for each of " +
-                                                      std::to_string(input.vertex_count) + " vertices"});
-        for (uint32_t k = 0; k < leaf.count; ++k)
-          for (uint32_t l = 0; l < n; ++l)
-            slots[(leaf.slot + k) * n + l] = stream->values[size_t(first + l) * 4 + leaf.component + k];
-      }
-    }
+    if (auto ok = begin_vertices(executor, input, inputs, first, n); !ok) return std::unexpected(ok.error());
     if (auto ok = executor.run(); !ok) return std::unexpected(ok.error());
     for (const Interface& o : outputs) {
       const Real* slots = executor.output(o.variable);
@@ -492,35 +503,65 @@ TwinResult<TwinImage> draw(const DrawInput& input) {
 
 namespace {
 
-// The fragment stage for pixel (x, y) alone (its quad, its triangle), in `Real`: reported
-// to `observer`, and written into `image` when given.
+// The fragment stage for each of `pixels` alone (its quad, its triangle), in `Real`, the
+// draw prepared once: reported to observer_for(i) (null: not observed), and written into
+// `image` when given. An uncovered pixel is an error when `require_covered`, else skipped.
 template <typename Real>
-TwinResult<void> run_pixel(const DrawInput& input, int x, int y, Observer* observer, TwinImage* image) {
+TwinResult<void> run_pixels(const DrawInput& input, std::span<const PixelAt> pixels,
+                            const std::function<Observer*(size_t)>& observer_for, TwinImage* image,
+                            bool require_covered) {
   auto prepared = prepare<Real>(input);
   if (!prepared) return std::unexpected(prepared.error());
-  if (x < 0 || y < 0 || x >= input.width || y >= input.height || !prepared->visibility.at(x, y).covered())
-    return std::unexpected(TwinError{.message = "pixel " + std::to_string(x) + "," + std::to_string(y) + " is not covered"});
   const FragmentStage<Real> stage(input, prepared->vertices, prepared->indices, prepared->visibility);
   std::vector<FragmentLane> lanes;
-  stage.quad_lanes(x & ~1, y & ~1, lanes);
-  const uint32_t triangle = prepared->visibility.at(x, y).triangle;
-  std::vector<FragmentLane> mine;   // only this triangle's quad
-  uint32_t lane = 0;
-  for (const FragmentLane& l : lanes)
-    if (l.triangle == triangle) {
-      if (l.x == x && l.y == y) lane = uint32_t(mine.size());
-      mine.push_back(l);
+  for (size_t i = 0; i < pixels.size(); ++i) {
+    const auto [x, y] = pixels[i];
+    if (x < 0 || y < 0 || x >= input.width || y >= input.height || !prepared->visibility.at(x, y).covered()) {
+      if (!require_covered) continue;
+      return std::unexpected(TwinError{.message = "pixel " + std::to_string(x) + "," + std::to_string(y) + " is not covered"});
     }
-  BasicExecutor<Real> executor(stage.module(), input.resources, input.precision);
-  executor.limit_work(input.work_limit);
-  if (observer) executor.observe(observer, lane);
-  return stage.run(executor, mine, image);
+    lanes.clear();
+    stage.quad_lanes(x & ~1, y & ~1, lanes);
+    const uint32_t triangle = prepared->visibility.at(x, y).triangle;
+    std::vector<FragmentLane> mine;   // only this triangle's quad
+    uint32_t lane = 0;
+    for (const FragmentLane& l : lanes)
+      if (l.triangle == triangle) {
+        if (l.x == x && l.y == y) lane = uint32_t(mine.size());
+        mine.push_back(l);
+      }
+    BasicExecutor<Real> executor(stage.module(), input.resources, input.precision);
+    executor.limit_work(input.work_limit);
+    if (Observer* observer = observer_for ? observer_for(i) : nullptr) executor.observe(observer, lane);
+    if (auto ok = stage.run(executor, mine, image); !ok) return ok;
+  }
+  return {};
 }
 
 }  // namespace
 
 TwinResult<void> trace_pixel(const DrawInput& input, int x, int y, Observer& observer) {
-  return run_pixel<double>(input, x, y, &observer, nullptr);
+  const PixelAt pixel{x, y};
+  return run_pixels<double>(input, {&pixel, 1}, [&](size_t) { return &observer; }, nullptr, true);
+}
+
+TwinResult<void> trace_vertices(const DrawInput& input, std::span<const uint32_t> vertices,
+                                const std::function<Observer*(size_t)>& observer_for) {
+  Executor executor(*input.program.vertex, input.resources, input.precision);
+  executor.limit_work(input.work_limit);
+  const auto inputs = interface_of(*input.program.vertex, spv::StorageClass::Input);
+  for (size_t i = 0; i < vertices.size(); ++i) {
+    if (vertices[i] >= input.vertex_count) continue;
+    if (auto ok = begin_vertices(executor, input, inputs, vertices[i], 1); !ok) return ok;
+    executor.observe(observer_for ? observer_for(i) : nullptr, 0);
+    if (auto ok = executor.run(); !ok) return ok;
+  }
+  return {};
+}
+
+TwinResult<void> trace_pixels(const DrawInput& input, std::span<const PixelAt> pixels,
+                              const std::function<Observer*(size_t)>& observer_for) {
+  return run_pixels<double>(input, pixels, observer_for, nullptr, false);
 }
 
 TwinResult<std::array<double, 4>> wide_pixel(const DrawInput& input, int x, int y) {
@@ -528,7 +569,8 @@ TwinResult<std::array<double, 4>> wide_pixel(const DrawInput& input, int x, int 
   wide.precision = Precision::exact;
   TwinImage image{input.width, input.height, std::vector<double>(size_t(input.width) * input.height * 4, 0.0),
                   std::vector<uint8_t>(size_t(input.width) * input.height, 0)};
-  if (auto ok = run_pixel<WideReal>(wide, x, y, nullptr, &image); !ok) return std::unexpected(ok.error());
+  const PixelAt pixel{x, y};
+  if (auto ok = run_pixels<WideReal>(wide, {&pixel, 1}, {}, &image, true); !ok) return std::unexpected(ok.error());
   const size_t at = (size_t(y) * input.width + x) * 4;
   return std::array<double, 4>{image.rgba[at], image.rgba[at + 1], image.rgba[at + 2], image.rgba[at + 3]};
 }

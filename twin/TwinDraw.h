@@ -8,6 +8,7 @@
 // screen as the Vulkan backend's pipeline sets them.
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -63,6 +64,17 @@ TwinResult<TwinImage> draw(const DrawInput& input);
 // quad), every value it computes reported to `observer`. An error when the pixel is not
 // covered.
 TwinResult<void> trace_pixel(const DrawInput& input, int x, int y, Observer& observer);
+
+// trace_pixel for each of `pixels`, the draw prepared once: pixel i's values go to
+// observer_for(i) (null: not traced). Pixels the draw does not cover are skipped.
+struct PixelAt {
+  int x = 0, y = 0;
+};
+TwinResult<void> trace_pixels(const DrawInput& input, std::span<const PixelAt> pixels,
+                              const std::function<Observer*(size_t)>& observer_for);
+// The vertex stage for each of `vertices` (indices into the streams), observed likewise.
+TwinResult<void> trace_vertices(const DrawInput& input, std::span<const uint32_t> vertices,
+                                const std::function<Observer*(size_t)>& observer_for);
 
 // Pixel (x, y)'s colour with both stages computed in WideReal (Boost's quad, 113-bit
 // significand) whatever the input's precision: the double twin's own error at that pixel is

@@ -8,7 +8,7 @@
 #include <map>
 #include <sstream>
 
-#include "twin/OpcodeNames.gen.h"
+#include "twin/ValueNames.h"
 
 namespace twin {
 namespace {
@@ -27,12 +27,6 @@ std::string values_text(const std::vector<double>& values) {
   std::string s = "(";
   for (size_t i = 0; i < values.size(); ++i) s += (i ? ", " : "") + number(values[i]);
   return s + ")";
-}
-
-std::string ext_name(uint32_t op) {
-  for (const auto& entry : generated::glsl_std450_names)
-    if (entry.opcode == op) return std::string("GLSL.std.450 ") + entry.name;
-  return "GLSL.std.450 " + std::to_string(op);
 }
 
 // Records every value of the traced lane and stops at the first non-finite one.
@@ -114,25 +108,11 @@ TwinResult<std::optional<ValueOrigin>> first_nonfinite(const DrawInput& input, i
   origin.file = line.file;
   origin.line = line.line;
   origin.source_text = source_line_text(m, line.file, line.line);
-  auto operands = m.operands_of(in);
-  if (spv::Op(in.op) == spv::Op::OpExtInst) {
-    origin.operation = ext_name(operands[1]);
-    operands = operands.subspan(2);
-  } else {
-    origin.operation = opcode_name(in.op);
-  }
-  // An unnamed temporary loaded from a named variable goes by the variable's name.
-  std::map<uint32_t, uint32_t> loaded_from;
-  for (const Instruction& i : m.instructions)
-    if (spv::Op(i.op) == spv::Op::OpLoad) loaded_from[i.result] = m.operands_of(i)[0];
-  const auto name = [&](uint32_t id) {
-    if (m.names.count(id)) return m.names.at(id);
-    auto it = loaded_from.find(id);
-    return it != loaded_from.end() && m.names.count(it->second) ? m.names.at(it->second) : m.name_of(id);
-  };
+  origin.operation = operation_name(m, in);
+  const ValueNames name(m);
   origin.result = name(in.result);
   origin.values = *search.values_of(in.result);
-  for (uint32_t id : operands)
+  for (uint32_t id : value_operands(m, in))
     if (id < m.bound)
       if (const std::vector<double>* v = search.values_of(id)) origin.operands.push_back({name(id), *v});
   return std::optional<ValueOrigin>(std::move(origin));

@@ -88,6 +88,21 @@ ojson cell_json(const CellResult& r) {
                   {"bound", json_number(r.sh->bound)},
                   {"precompute_ms", json_number(r.sh->precompute_ms)},
                   {"bytes_per_vertex", json_number(r.sh->bytes_per_vertex)}};
+  if (const auto& d = r.divergence) {
+    if (d->kind == "error") {
+      cell["divergence"] = {{"error", d->error}};
+    } else {
+      ojson operands = ojson::array();
+      for (const auto& o : d->operands) operands.push_back({{"name", o.name}, {"matches", o.matches}});
+      cell["divergence"] = {{"kind", d->kind}, {"against", d->against}, {"stage", d->stage}, {"file", d->file},
+                            {"line", d->line}, {"source", d->source}, {"operation", d->operation},
+                            {"value", d->value}, {"operands", std::move(operands)}, {"text", d->text},
+                            {"pixels", d->pixels}};
+      if (!d->nearest_file.empty() || !d->nearest_value.empty())
+        cell["divergence"]["nearest"] = {{"file", d->nearest_file}, {"line", d->nearest_line},
+                                         {"value", d->nearest_value}, {"relation", d->nearest_relation}};
+    }
+  }
   if (r.twin)
     cell["twin"] = {{"precision", r.twin->precision},
                     {"max_abs", json_number(r.twin->max_abs)},
@@ -320,6 +335,43 @@ CellResult read_cell(const json& c, const std::string& p) {
     read(*s, "precompute_ms", sp, e.precompute_ms);
     read(*s, "bytes_per_vertex", sp, e.bytes_per_vertex);
     r.sh = e;
+  }
+  if (const json* d = object_at(c, "divergence", p)) {
+    const std::string dp = child(p, "divergence");
+    CellResult::Divergence x;
+    if (d->contains("error")) {
+      x.kind = "error";
+      read(*d, "error", dp, x.error);
+    } else {
+      read(*d, "kind", dp, x.kind);
+      read(*d, "against", dp, x.against);
+      read(*d, "stage", dp, x.stage);
+      read(*d, "file", dp, x.file);
+      read(*d, "line", dp, x.line);
+      read(*d, "source", dp, x.source);
+      read(*d, "operation", dp, x.operation);
+      read(*d, "value", dp, x.value);
+      read(*d, "text", dp, x.text);
+      read(*d, "pixels", dp, x.pixels);
+      if (const json* list = member(*d, "operands"); list && list->is_array())
+        for (size_t i = 0; i < list->size(); ++i) {
+          const json& o = (*list)[i];
+          const std::string op = child(child(dp, "operands"), std::to_string(i));
+          if (!o.is_object()) throw BadField{op, "expected an object"};
+          CellResult::Divergence::Operand operand;
+          read(o, "name", op, operand.name);
+          read(o, "matches", op, operand.matches);
+          x.operands.push_back(std::move(operand));
+        }
+      if (const json* n = object_at(*d, "nearest", dp)) {
+        const std::string np = child(dp, "nearest");
+        read(*n, "file", np, x.nearest_file);
+        read(*n, "line", np, x.nearest_line);
+        read(*n, "value", np, x.nearest_value);
+        read(*n, "relation", np, x.nearest_relation);
+      }
+    }
+    r.divergence = std::move(x);
   }
   if (const json* t = object_at(c, "twin", p)) {
     const std::string tp = child(p, "twin");

@@ -169,6 +169,26 @@ struct CellResult {
     std::string error;                // why there are no figures ("" = there are)
   };
   std::optional<TwinFigures> twin;
+  // A failing cell of a port: the line where it departs from what it is judged against
+  // (twin/Divergence.h), found by matching the port's values to the original's or the
+  // model's over a few dozen pixels. Absent when the cell did not fail or has no twin to ask.
+  struct Divergence {
+    std::string kind;                 // "found", "output_matches", "unlocalised", "error"
+    std::string against;              // "the original", "the model"
+    std::string stage, file;          // stage: "fragment" or "vertex"
+    int line = 0;
+    std::string source, operation, value;
+    struct Operand {
+      std::string name, matches;      // matches: the counterpart's label, "constant" or ""
+    };
+    std::vector<Operand> operands;
+    std::string nearest_file, nearest_value, nearest_relation;   // nearest_file "": none
+    int nearest_line = 0;
+    std::string text;                 // the one line the console prints
+    int pixels = 0;
+    std::string error;                // kind "error": why it could not be localised
+  };
+  std::optional<Divergence> divergence;
   // CPU wall times: compile, build, draw, readback, reference, compare, and io (writing the
   // cell's images, with --out only). "compile" is the
   // cell's program's (shared by every cell of that case/variant/language) and "reference"

@@ -21,6 +21,7 @@
 #include "lut/LookupTexture.h"
 #include "lut/LutTolerance.h"
 #include "run/CellDraw.h"
+#include "run/CellDivergence.h"
 #include "run/CellTwins.h"
 #include "run/LutDomain.h"
 #include "run/ProgramArtefacts.h"
@@ -71,6 +72,7 @@ struct GroupRunner::Impl final : GroupDrawer {
     const Case& c = *g.c;
     group_ = &g;
     twins_.begin_group();
+    divergences_.begin_group();
     const std::string mesh_key = g.shape + (settings_.mesh_slices > 0 ? "/" + std::to_string(settings_.mesh_slices)
                                             : c.tessellation == Tessellation::high ? "/high" : "/low");
     if (!meshes_.contains(mesh_key))
@@ -270,6 +272,10 @@ struct GroupRunner::Impl final : GroupDrawer {
       if (r.status != CellStatus::fail) continue;
       if (group_image) {
         explain_cell(images[i], *group_image, classes_, evidence, r);
+        // A port against its original: where it departs, from both twins.
+        if (c.reference_render && !r.reference.is_reference)
+          r.divergence = divergences_.locate(*this, g, g.cells[rendered[i]], r,
+                                             divergence_pixels(images[i], *group_image, classes_));
       } else {
         const ReferenceImage& own = own_references.at(rendered[i]);
         explain_cell(images[i], own, classify_pixels(own), evidence, r);
@@ -512,6 +518,7 @@ struct GroupRunner::Impl final : GroupDrawer {
   std::set<std::string> reduced_precision_;   // cells whose path computes in reduced precision, by id
   std::vector<PixelClass> classes_;                 // its reference, classified once for all its cells
   CellTwins twins_;                                 // --twin
+  CellDivergence divergences_;                      // where a failing port departs
 };
 
 GroupRunner::GroupRunner(const CellSettings& settings, const SceneSetup& scene, const StoredReferences& stored,

@@ -236,4 +236,9 @@ Result<std::array<double, 4>> TwinRenderer::wide_pixel(int x, int y) const {
 
 const twin::Program* TwinRenderer::last_program() const { return last_ ? &last_->program : nullptr; }
 
+std::optional<twin::DrawInput> TwinRenderer::last_input() const {
+  if (!last_) return std::nullopt;
+  return last_->input(twin::Precision::exact, threads_);
+}
+
 }  // namespace shaderbed

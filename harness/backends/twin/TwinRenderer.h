@@ -35,6 +35,9 @@ class TwinRenderer final : public Backend {
   Result<std::array<double, 4>> wide_pixel(int x, int y) const;
   // The last draw's program (null before a draw).
   const twin::Program* last_program() const;
+  // The last draw's inputs in double, valid until the next draw (nothing before a draw):
+  // what twin/ traces a pixel of it with.
+  std::optional<twin::DrawInput> last_input() const;
 
  private:
   struct Programs;

@@ -1,0 +1,110 @@
+#include "run/CellDivergence.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace shaderbed {
+namespace {
+
+CellResult::Divergence error_result(std::string message) {
+  CellResult::Divergence d;
+  d.kind = "error";
+  d.error = std::move(message);
+  return d;
+}
+
+std::unique_ptr<Backend> double_twin(TwinRenderer*& out) {
+  auto renderer = std::make_unique<TwinRenderer>(twin::Precision::exact);
+  out = renderer.get();
+  return renderer;
+}
+
+}  // namespace
+
+std::vector<twin::PixelAt> divergence_pixels(const Image& render, const ReferenceImage& reference,
+                                             const std::vector<PixelClass>& classes, size_t failing, size_t spread) {
+  std::vector<std::pair<double, size_t>> interior;   // (error, pixel index)
+  if (render.width != reference.width || render.height != reference.height) return {};
+  for (size_t i = 0; i < classes.size(); ++i) {
+    if (classes[i] != PixelClass::interior || !render.coverage[i]) continue;
+    double e = 0;
+    for (size_t c = 0; c < 3; ++c) {
+      const double d = std::abs(double(render.rgba[i * 4 + c]) - reference.rgba[i * 4 + c]);
+      e = std::max(e, std::isfinite(d) ? d : INFINITY);
+    }
+    interior.emplace_back(e, i);
+  }
+  std::vector<size_t> chosen;
+  std::vector<std::pair<double, size_t>> worst = interior;
+  std::ranges::sort(worst, [](const auto& a, const auto& b) { return a.first > b.first; });
+  for (size_t k = 0; k < worst.size() && chosen.size() < failing && worst[k].first > 0; ++k) chosen.push_back(worst[k].second);
+  const size_t step = std::max<size_t>(1, interior.size() / std::max<size_t>(1, spread));
+  for (size_t k = step / 2; k < interior.size() && chosen.size() < failing + spread; k += step)
+    if (std::ranges::find(chosen, interior[k].second) == chosen.end()) chosen.push_back(interior[k].second);
+  std::vector<twin::PixelAt> out;
+  for (size_t i : chosen) out.push_back({int(i % size_t(render.width)), int(i / size_t(render.width))});
+  return out;
+}
+
+CellDivergence::CellDivergence() : port_slot_{"twin-double"}, original_slot_{"twin-double"} {
+  port_slot_.backend = double_twin(port_);
+  original_slot_.backend = double_twin(original_);
+}
+
+CellResult::Divergence divergence_result(const twin::Divergence& d) {
+  CellResult::Divergence r;
+  using Kind = twin::Divergence::Kind;
+  r.kind = d.kind == Kind::found ? "found" : d.kind == Kind::output_matches ? "output_matches" : "unlocalised";
+  r.against = d.against;
+  r.stage = d.stage;
+  r.file = d.file;
+  r.line = d.line;
+  r.source = d.source_text;
+  r.operation = d.operation;
+  r.value = d.value;
+  for (const auto& o : d.operands) r.operands.push_back({o.name, o.matches});
+  if (d.nearest) {
+    r.nearest_file = d.nearest->file;
+    r.nearest_line = d.nearest->line;
+    r.nearest_value = d.nearest->name;
+    r.nearest_relation = d.nearest->relation;
+  }
+  r.text = d.describe();
+  r.pixels = int(d.pixels);
+  return r;
+}
+
+CellResult::Divergence CellDivergence::locate(GroupDrawer& drawer, const CellGroup& group, const PlannedCell& cell,
+                                              const CellResult& row, std::span<const twin::PixelAt> pixels) {
+  const auto key = std::pair{group.variant, cell.language};
+  if (auto it = found_.find(key); it != found_.end()) return it->second;
+  CellResult::Divergence& result = found_[key];
+  if (!group.reference_cell || !group.reference_variant) return result = error_result("the case names no original");
+  if (pixels.empty()) return result = error_result("no interior pixel to trace");
+  CellResult scratch = row;
+  const TimingRequest once{.warmup = 0, .runs = 0};
+  if (auto drawn = drawer.draw(*group.variant, {cell.language, &port_slot_, ShaderPath::spirv}, once, scratch); !drawn)
+    return result = error_result("the port's twin could not draw it: " + drawn.error().to_string());
+  CellResult original_row = row;
+  if (auto drawn = drawer.draw(*group.reference_variant, {group.reference_cell->language, &original_slot_, ShaderPath::spirv},
+                               once, original_row);
+      !drawn)
+    return result = error_result("the original's twin could not draw it: " + drawn.error().to_string());
+  const auto port_input = port_->last_input();
+  const auto original_input = original_->last_input();
+  auto port_trace = twin::trace_program(*port_input, pixels);
+  if (!port_trace) return result = error_result("the port's twin could not trace it: " + port_trace.error().to_string());
+  auto original_trace = twin::trace_program(*original_input, pixels);
+  if (!original_trace)
+    return result = error_result("the original's twin could not trace it: " + original_trace.error().to_string());
+  twin::Divergence found = twin::localise_divergence(*port_trace, twin::counterparts_of(*original_trace));
+  if (found.varying_location >= 0) {   // a varying departs: where its vertex stage does
+    auto port_vertex = twin::trace_vertex_program(*port_input, 32);
+    auto original_vertex = twin::trace_vertex_program(*original_input, 32);
+    if (port_vertex && original_vertex)
+      found = twin::into_vertex_stage(found, *port_vertex, twin::counterparts_of(*original_vertex));
+  }
+  return result = divergence_result(found);
+}
+
+}  // namespace shaderbed

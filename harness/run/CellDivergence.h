@@ -1,0 +1,43 @@
+#pragma once
+// Where a failing port departs from what it is judged against (twin/Divergence.h): the
+// port and its original, each drawn by its double twin, traced at the pixels where the
+// cell fails and a spread of others, and their values matched by fingerprint. Done once
+// per group, variant and language (the port's twin is the same on every backend and path).
+#include <map>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "backends/twin/TwinRenderer.h"
+#include "compare/ImageComparison.h"
+#include "report/Results.h"
+#include "run/CellPlan.h"
+#include "run/CellReference.h"
+#include "twin/Divergence.h"
+
+namespace shaderbed {
+
+// The pixels a divergence is traced at: the `failing` interior pixels where the render is
+// furthest from the reference, then `spread` more spaced evenly over the interior.
+std::vector<twin::PixelAt> divergence_pixels(const Image& render, const ReferenceImage& reference,
+                                             const std::vector<PixelClass>& classes, size_t failing = 12,
+                                             size_t spread = 20);
+
+class CellDivergence {
+ public:
+  CellDivergence();
+  void begin_group() { found_.clear(); }
+  // Failing cell `row` of a differential group, at `pixels`.
+  CellResult::Divergence locate(GroupDrawer& drawer, const CellGroup& group, const PlannedCell& cell,
+                                const CellResult& row, std::span<const twin::PixelAt> pixels);
+
+ private:
+  BackendSlot port_slot_, original_slot_;   // two twins: both draws stay traceable
+  TwinRenderer *port_ = nullptr, *original_ = nullptr;
+  std::map<std::pair<const Variant*, Language>, CellResult::Divergence> found_;
+};
+
+// The report's form of what twin/ found.
+CellResult::Divergence divergence_result(const twin::Divergence& d);
+
+}  // namespace shaderbed
