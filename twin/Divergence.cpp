@@ -47,7 +47,21 @@ bool loose(const Module& m, uint32_t type) {
 struct Matcher {
   const ProgramTrace& port;
   std::span<const Counterpart> counterparts;
+  const DataFlow& flow;
   ValueNames names;
+
+  // A varying's component that is the same 0 or 1 at every pixel: padding (a vec4 texture
+  // coordinate's z and w) that needs no counterpart.
+  bool padding(const ValueFingerprint& v, uint32_t s) const {
+    std::optional<double> seen;
+    for (size_t p = 0; p < port.pixels.size(); ++p) {
+      if (!v.present[p]) continue;
+      const double x = v.values[p * v.slots + s];
+      if (seen && *seen != x) return false;
+      seen = x;
+    }
+    return seen && (*seen == 0 || *seen == 1);
+  }
 
   // Slot s of port value v against slot k of counterpart c, over the pixels both computed.
   bool slot_matches(const ValueFingerprint& v, uint32_t s, const Counterpart& c, uint32_t k) const {
@@ -74,7 +88,13 @@ struct Matcher {
     const Instruction& in = port.module->instructions[v.instruction];
     if (opaque(*port.module, in.result_type)) return -2;   // a handle: nothing to compare
     if (std::ranges::none_of(v.present, [](uint8_t p) { return p != 0; })) return -2;
-    const bool any_position = loose(*port.module, in.result_type);
+    // What a stage reads (uniforms, varyings) may be packed or laid out as the port likes: a
+    // transposed matrix or a texture coordinate in .zw is still the same values.
+    const bool read = flow.kind[v.instruction] == DataFlow::Kind::read;
+    const bool any_position = read || loose(*port.module, in.result_type);
+    const bool varying = read && flow.read_variable[v.instruction] &&
+                         spv::StorageClass(port.module->types[port.module->type_of[flow.read_variable[v.instruction]]].storage) ==
+                             spv::StorageClass::Input;
     const std::string name = names(in.result);
     int best = -1;
     const auto better = [&](int c) {
@@ -86,18 +106,20 @@ struct Matcher {
     };
     for (size_t c = 0; c < counterparts.size(); ++c) {
       bool all = true;
-      for (uint32_t s = 0; s < v.slots && all; ++s) all = slot_in(v, s, counterparts[c], any_position);
+      for (uint32_t s = 0; s < v.slots && all; ++s)
+        all = slot_in(v, s, counterparts[c], any_position) || (varying && padding(v, s));
       if (all && better(int(c))) best = int(c);
     }
     if (best >= 0 || v.slots == 1) return best;
-    // Slot by slot from different counterparts (a vector the original builds from scalars).
-    int first = -1;
+    // Slot by slot from different counterparts: a vector the original builds from scalars,
+    // or what is read packed otherwise.
+    int first = -2;
     for (uint32_t s = 0; s < v.slots; ++s) {
       int found = -1;
       for (size_t c = 0; c < counterparts.size() && found < 0; ++c)
-        if (counterparts[c].slots == 1 && slot_in(v, s, counterparts[c], true)) found = int(c);
-      if (found < 0) return -1;
-      if (s == 0) first = found;
+        if ((any_position || counterparts[c].slots == 1) && slot_in(v, s, counterparts[c], true)) found = int(c);
+      if (found < 0 && !(varying && padding(v, s))) return -1;
+      if (first == -2 && found >= 0) first = found;
     }
     return first;
   }
@@ -142,6 +164,9 @@ Relation relate(const ValueFingerprint& v, const Counterpart& c, uint32_t k, siz
 }  // namespace
 
 std::optional<SourceLine> varying_writer(const Module& vertex, int location) {
+  // The value stored to the varying, followed back through copies (an HLSL entry point's
+  // wrapper copies its outputs out at the function's first line) to where it is computed.
+  const DataFlow flow = data_flow(vertex);
   std::optional<SourceLine> found;
   std::map<uint32_t, uint32_t> base;   // access chain -> its variable
   for (const Instruction& in : vertex.instructions) {
@@ -150,11 +175,16 @@ std::optional<SourceLine> varying_writer(const Module& vertex, int location) {
       const uint32_t b = vertex.operands_of(in)[0];
       base[in.result] = base.contains(b) ? base[b] : b;
     }
-    if (op != spv::Op::OpStore || in.line == 0) continue;
+    if (op != spv::Op::OpStore || location < 0) continue;
     uint32_t target = vertex.operands_of(in)[0];
     if (base.contains(target)) target = base[target];
-    const Decoration& d = vertex.decorations[target];
-    if (location >= 0 && d.location == location) found = vertex.lines[in.line];
+    if (vertex.decorations[target].location != location) continue;
+    int32_t at = flow.defining[vertex.operands_of(in)[1]];
+    for (int hops = 0; at >= 0 && flow.kind[size_t(at)] == DataFlow::Kind::copy && !flow.inputs[size_t(at)].empty() && hops < 8;
+         ++hops)
+      at = int32_t(flow.inputs[size_t(at)].back());
+    const uint32_t line = at >= 0 && vertex.instructions[size_t(at)].line ? vertex.instructions[size_t(at)].line : in.line;
+    if (line) found = vertex.lines[line];
   }
   return found;
 }
@@ -191,7 +221,8 @@ std::vector<Counterpart> counterparts_of(const ProgramTrace& original) {
 }
 
 std::vector<int> match_values(const ProgramTrace& port, std::span<const Counterpart> counterparts) {
-  const Matcher matcher{port, counterparts, ValueNames(*port.module)};
+  const DataFlow flow = data_flow(*port.module);
+  const Matcher matcher{port, counterparts, flow, ValueNames(*port.module)};
   std::vector<int> out;
   out.reserve(port.values.size());
   for (const ValueFingerprint& v : port.values) out.push_back(matcher.match(v));
@@ -239,12 +270,12 @@ Divergence localise_divergence(const ProgramTrace& port, std::span<const Counter
   const auto inputs_match = [&](size_t i) {
     return std::ranges::none_of(flow.inputs[i], [&](uint32_t j) { return departs[j] != 0; });
   };
+  // Where the departure starts: the first departing value whose inputs all match, computed
+  // before read (a uniform or varying the original lays out otherwise) before copied.
   std::optional<size_t> root;
-  for (bool copies : {false, true}) {
-    for (size_t i = 0; i < count; ++i) {
-      if (!divergent[i] || (flow.kind[i] == Kind::copy) != copies || !inputs_match(i)) continue;
-      if (!root || order[i] < order[*root]) root = i;
-    }
+  for (Kind kind : {Kind::computed, Kind::read, Kind::copy}) {
+    for (size_t i = 0; i < count; ++i)
+      if (divergent[i] && flow.kind[i] == kind && inputs_match(i) && (!root || order[i] < order[*root])) root = i;
     if (root) break;
   }
   d.kind = root ? Divergence::Kind::found : Divergence::Kind::unlocalised;
@@ -332,8 +363,10 @@ Divergence into_vertex_stage(const Divergence& fragment, const ProgramTrace& ver
                              std::span<const Counterpart> vertex_counterparts) {
   if (fragment.kind != Divergence::Kind::found || fragment.varying_location < 0) return fragment;
   if (!vertex_counterparts.empty()) {
+    // A computed value of the vertex stage; a uniform it reads that matches nothing is more
+    // likely laid out otherwise than the cause, so the varying's own line says more then.
     Divergence d = localise_divergence(vertex, vertex_counterparts, fragment.against);
-    if (d.kind == Divergence::Kind::found) return d;
+    if (d.kind == Divergence::Kind::found && d.operation != "OpLoad") return d;
   }
   Divergence d = fragment;
   if (auto written = varying_writer(*vertex.module, fragment.varying_location)) {
