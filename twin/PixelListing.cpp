@@ -1,0 +1,82 @@
+#include "twin/PixelListing.h"
+
+#include <spirv/unified1/spirv.hpp11>
+
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include "twin/ValueNames.h"
+#include "twin/ValueOrigin.h"
+
+namespace twin {
+namespace {
+
+std::string values_text(const std::vector<double>& values) {
+  std::ostringstream out;
+  out.precision(6);
+  if (values.size() != 1) out << "(";
+  for (size_t i = 0; i < values.size(); ++i) out << (i ? ", " : "") << values[i];
+  if (values.size() != 1) out << ")";
+  return out.str();
+}
+
+}  // namespace
+
+std::vector<ListedLine> pixel_listing(const ProgramTrace& trace, size_t point, std::span<const Counterpart> counterparts) {
+  const Module& m = *trace.module;
+  const ValueNames names(m);
+  // Which named variable each value is stored into.
+  std::map<uint32_t, std::string> stored_as;
+  for (const Instruction& in : m.instructions)
+    if (spv::Op(in.op) == spv::Op::OpStore) {
+      const auto ops = m.operands_of(in);
+      if (m.names.contains(ops[0])) stored_as[ops[1]] = m.names.at(ops[0]);
+    }
+  const std::vector<int> match = counterparts.empty() ? std::vector<int>(trace.values.size(), -2)
+                                                      : match_values(trace, counterparts);
+  std::vector<ListedLine> lines;
+  std::map<std::pair<std::string, int>, size_t> at;
+  for (size_t i = 0; i < trace.values.size(); ++i) {
+    const ValueFingerprint& v = trace.values[i];
+    if (point >= v.present.size() || !v.present[point]) continue;
+    const Instruction& in = m.instructions[v.instruction];
+    const SourceLine& l = line_of(m, in);
+    if (l.line == 0) continue;
+    auto [it, added] = at.try_emplace({l.file, l.line}, lines.size());
+    if (added) lines.push_back({l.file, l.line, source_line_text(m, l.file, l.line), {}});
+    ListedLine& line = lines[it->second];
+    ListedValue value{"", {v.values.begin() + std::ptrdiff_t(point * v.slots), v.values.begin() + std::ptrdiff_t((point + 1) * v.slots)},
+                      match[i] >= 0 ? counterparts[size_t(match[i])].label() : "", !counterparts.empty() && match[i] == -1};
+    if (auto named = stored_as.find(in.result); named != stored_as.end()) {
+      value.name = named->second;
+      line.values.push_back(std::move(value));
+    } else if (line.values.empty() || !line.values.back().name.empty()) {
+      line.values.push_back(std::move(value));   // the line's last value so far
+    } else {
+      line.values.back() = std::move(value);
+    }
+  }
+  // A line with a named value shows those only.
+  for (ListedLine& line : lines) {
+    const bool named = std::ranges::any_of(line.values, [](const ListedValue& v) { return !v.name.empty(); });
+    if (named) std::erase_if(line.values, [](const ListedValue& v) { return v.name.empty(); });
+  }
+  return lines;
+}
+
+std::string listing_text(const std::vector<ListedLine>& lines) {
+  std::string out;
+  for (const ListedLine& l : lines) {
+    out += l.file + ":" + std::to_string(l.line) + "  " + l.text + "\n";
+    for (const ListedValue& v : l.values) {
+      out += "      " + (v.name.empty() ? std::string("=") : v.name + " =") + " " + values_text(v.values);
+      if (v.departs) out += "   matches nothing";
+      else if (!v.matches.empty()) out += "   matches " + v.matches;
+      out += "\n";
+    }
+  }
+  return out;
+}
+
+}  // namespace twin
