@@ -8,32 +8,10 @@
 #include <map>
 #include <sstream>
 
-#include "twin/OpcodeNames.gen.h"
+#include "twin/InstructionText.h"
 
 namespace twin {
 namespace {
-
-std::string number(double v) {
-  if (std::isnan(v)) return "NaN";
-  if (std::isinf(v)) return v > 0 ? "+Inf" : "-Inf";
-  std::ostringstream out;
-  out.precision(9);
-  out << v;
-  return out.str();
-}
-
-std::string values_text(const std::vector<double>& values) {
-  if (values.size() == 1) return number(values[0]);
-  std::string s = "(";
-  for (size_t i = 0; i < values.size(); ++i) s += (i ? ", " : "") + number(values[i]);
-  return s + ")";
-}
-
-std::string ext_name(uint32_t op) {
-  for (const auto& entry : generated::glsl_std450_names)
-    if (entry.opcode == op) return std::string("GLSL.std.450 ") + entry.name;
-  return "GLSL.std.450 " + std::to_string(op);
-}
 
 // Records every value of the traced lane and stops at the first non-finite one.
 class NonFiniteSearch final : public Observer {
@@ -114,22 +92,9 @@ TwinResult<std::optional<ValueOrigin>> first_nonfinite(const DrawInput& input, i
   origin.file = line.file;
   origin.line = line.line;
   origin.source_text = source_line_text(m, line.file, line.line);
-  auto operands = m.operands_of(in);
-  if (spv::Op(in.op) == spv::Op::OpExtInst) {
-    origin.operation = ext_name(operands[1]);
-    operands = operands.subspan(2);
-  } else {
-    origin.operation = opcode_name(in.op);
-  }
-  // An unnamed temporary loaded from a named variable goes by the variable's name.
-  std::map<uint32_t, uint32_t> loaded_from;
-  for (const Instruction& i : m.instructions)
-    if (spv::Op(i.op) == spv::Op::OpLoad) loaded_from[i.result] = m.operands_of(i)[0];
-  const auto name = [&](uint32_t id) {
-    if (m.names.count(id)) return m.names.at(id);
-    auto it = loaded_from.find(id);
-    return it != loaded_from.end() && m.names.count(it->second) ? m.names.at(it->second) : m.name_of(id);
-  };
+  const auto operands = value_operands(m, in);
+  origin.operation = operation_name(m, in);
+  const ValueNames name(m);
   origin.result = name(in.result);
   origin.values = *search.values_of(in.result);
   for (uint32_t id : operands)
