@@ -7,7 +7,7 @@
 #include <map>
 #include <set>
 
-#include "twin/ValueNames.h"
+#include "twin/InstructionText.h"
 
 namespace twin {
 namespace {

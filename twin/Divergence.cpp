@@ -8,7 +8,7 @@
 #include <map>
 #include <sstream>
 
-#include "twin/ValueNames.h"
+#include "twin/InstructionText.h"
 #include "twin/ValueOrigin.h"
 
 namespace twin {

@@ -6,22 +6,10 @@
 #include <map>
 #include <sstream>
 
-#include "twin/ValueNames.h"
+#include "twin/InstructionText.h"
 #include "twin/ValueOrigin.h"
 
 namespace twin {
-namespace {
-
-std::string values_text(const std::vector<double>& values) {
-  std::ostringstream out;
-  out.precision(6);
-  if (values.size() != 1) out << "(";
-  for (size_t i = 0; i < values.size(); ++i) out << (i ? ", " : "") << values[i];
-  if (values.size() != 1) out << ")";
-  return out.str();
-}
-
-}  // namespace
 
 std::vector<ListedLine> pixel_listing(const ProgramTrace& trace, size_t point, std::span<const Counterpart> counterparts) {
   const Module& m = *trace.module;

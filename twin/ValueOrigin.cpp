@@ -8,26 +8,10 @@
 #include <map>
 #include <sstream>
 
-#include "twin/ValueNames.h"
+#include "twin/InstructionText.h"
 
 namespace twin {
 namespace {
-
-std::string number(double v) {
-  if (std::isnan(v)) return "NaN";
-  if (std::isinf(v)) return v > 0 ? "+Inf" : "-Inf";
-  std::ostringstream out;
-  out.precision(9);
-  out << v;
-  return out.str();
-}
-
-std::string values_text(const std::vector<double>& values) {
-  if (values.size() == 1) return number(values[0]);
-  std::string s = "(";
-  for (size_t i = 0; i < values.size(); ++i) s += (i ? ", " : "") + number(values[i]);
-  return s + ")";
-}
 
 // Records every value of the traced lane and stops at the first non-finite one.
 class NonFiniteSearch final : public Observer {
@@ -108,11 +92,12 @@ TwinResult<std::optional<ValueOrigin>> first_nonfinite(const DrawInput& input, i
   origin.file = line.file;
   origin.line = line.line;
   origin.source_text = source_line_text(m, line.file, line.line);
+  const auto operands = value_operands(m, in);
   origin.operation = operation_name(m, in);
   const ValueNames name(m);
   origin.result = name(in.result);
   origin.values = *search.values_of(in.result);
-  for (uint32_t id : value_operands(m, in))
+  for (uint32_t id : operands)
     if (id < m.bound)
       if (const std::vector<double>* v = search.values_of(id)) origin.operands.push_back({name(id), *v});
   return std::optional<ValueOrigin>(std::move(origin));

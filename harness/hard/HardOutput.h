@@ -11,7 +11,14 @@
 //             "status": "pass"|"fail"|"error", "message",
 //             "pixels", "measured_pixels", "nan", "inf", "nonfinite", "reference_nonfinite",
 //             "nonfinite_mismatch", "max_relative", "max_relative_pixel": [x, y] | null,
-//             "max_ulps", "max_ulps_pixel": [x, y] | null}, ...],
+//             "max_ulps", "max_ulps_pixel": [x, y] | null,
+//             "reference": "model" | "twin-double",
+//             user cases (reference "twin-double") also: "worst_pixel": [x, y] | null,
+//             "significance_loss": {"file", "line", "source", "operation", "result", "float": [..],
+//                                   "double": [..], "operands": [{"name", "float", "double"}, ..],
+//                                   "relative_error", "operand_relative_error", "text"} | null,
+//             "significance_note" (when null: why)}, ...],
+//   (a user case's scenarios are keyed "<case>/<scenario>")
 //   "models": [{"case", "robust": "present"|"not needed",
 //               "book": {"nonfinite", "nonfinite_mismatch", "max_relative", "max_ulps", "failed_rows"},
 //               "robust_variant": {...same...} | null}, ...]

@@ -13,6 +13,8 @@
 #include <fmt/format.h>
 
 #include "backends/Backend.h"
+#include "backends/VertexInputs.h"
+#include "backends/twin/TwinRenderer.h"
 #include "run/CaseUniforms.h"
 #include "run/CellDraw.h"
 #include "run/ProgramCache.h"
@@ -51,6 +53,26 @@ bool point_light(const std::string& model) {
   return info && (info->light == reference::LightUse::point || info->light == reference::LightUse::spot);
 }
 
+// Within kConditioningMargin of N.L = 0, N.V = 0 or L = -V (or L undefined), where the
+// rounding of one dot decides a branch.
+bool ill_conditioned(const reference::Configuration& config) {
+  const double length_l = glm::length(config.to_light);
+  if (length_l == 0 || !std::isfinite(length_l)) return true;
+  const glm::dvec3 n = glm::normalize(config.normal), l = config.to_light / length_l, v = glm::normalize(config.to_eye);
+  return std::abs(glm::dot(n, l)) < kConditioningMargin || std::abs(glm::dot(n, v)) < kConditioningMargin ||
+         glm::length(l + v) < kConditioningMargin;
+}
+
+// Whether a user's case lights with a point light: its shader binds light_position (in any
+// space), or the case says so, or its model's light is one.
+bool user_point_light(const Case& c) {
+  for (const auto& [language, table] : c.bindings)
+    for (const auto& [uniform, binding] : table)
+      for (const BindingSource& source : binding.sources)
+        if (source.name.starts_with("light_position")) return true;
+  return c.light == CaseLight::point || (c.light == CaseLight::model_default && point_light(c.model));
+}
+
 // Per pixel the model at the configuration the GPU sees. A per-vertex variant shades the
 // quad's corners and the pixel centre lies on the diagonal 0-2, so its colour there is
 // the mean of those two corners' colours.
@@ -84,11 +106,7 @@ ScenarioReference slice_reference(const Slice& slice, const Case& c, const std::
       r.judgement[i] = PixelJudgement::undefined;
       continue;
     }
-    const glm::dvec3 n = glm::normalize(config.normal), l = config.to_light / length_l,
-                     v = glm::normalize(config.to_eye);
-    if (std::abs(glm::dot(n, l)) < kConditioningMargin || std::abs(glm::dot(n, v)) < kConditioningMargin ||
-        glm::length(l + v) < kConditioningMargin)
-      r.judgement[i] = PixelJudgement::finite_only;
+    if (ill_conditioned(config)) r.judgement[i] = PixelJudgement::finite_only;
   }
   return r;
 }
@@ -124,8 +142,11 @@ ScenarioReference mesh_reference(const ReferenceImage& ref) {
 Result<std::vector<Case>> select_cases(const HardOptions& o) {
   if (auto ok = check_names(o.backends, {"vulkan", "gl"}, "backend"); !ok) return std::unexpected(ok.error());
   if (auto ok = check_names(o.languages, {"glsl", "hlsl", "cg"}, "language"); !ok) return std::unexpected(ok.error());
-  if (auto ok = check_names(o.scenarios, scenario_names(), "scenario"); !ok) return std::unexpected(ok.error());
+  // A user case's scenarios depend on its parameters: an unknown name there selects nothing.
+  if (o.user_cases.empty())
+    if (auto ok = check_names(o.scenarios, scenario_names(), "scenario"); !ok) return std::unexpected(ok.error());
   if (o.size < 8 || o.size > 1024) return fail(ErrorStage::options, fmt::format("--size {} is outside 8..1024", o.size));
+  if (o.cases.empty() && !o.user_cases.empty()) return std::vector<Case>{};
   auto cases = load_selected_cases(o.cases_dir.empty() ? default_cases_dir() : o.cases_dir, o.cases);
   if (!cases) return cases;
   for (Case& c : *cases)
@@ -192,7 +213,113 @@ class HardRunner {
     }
   }
 
+ void run_user_case(const Case& c, HardReport& report) {
+    UserCaseTraits traits{.point_light = user_point_light(c), .reads_tangent = false};
+    for (const Variant& v : c.variants)
+      for (const auto& shader : v.shaders)
+        if (auto program = program_for(c, v, shader.first); program)
+          if (auto streams = attribute_streams_for((*program)->vertex.reflection.inputs,
+                                                   c.attributes.contains(shader.first) ? &c.attributes.at(shader.first) : nullptr,
+                                                   shader.first, nullptr))
+            for (const AttributeStream& a : *streams)
+              traits.reads_tangent |= a.attribute == VertexAttribute::tangent || a.attribute == VertexAttribute::binormal;
+    for (Scenario& s : user_scenarios(c, traits)) {
+      if (!wanted(o_.scenarios, s.name)) continue;
+      const std::string key = c.name + "/" + s.name;
+      report.scenarios.push_back(key);
+      report.scenario_probes[key] = s.probes;
+      if (o_.progress) o_.progress(fmt::format("{} / {}", c.name, s.name));
+      Case scenario_case = c;
+      for (const auto& [name, value] : s.params)
+        if (scenario_case.params.contains(name)) scenario_case.params[name] = value;
+      run_user_scenario(scenario_case, s, traits, report);
+    }
+  }
+
  private:
+  // A user case's scenario: every variant and language drawn by the double twin (the
+  // reference) and by each backend, the fp32 render against the twin.
+  void run_user_scenario(const Case& c, const Scenario& s, const UserCaseTraits& traits, HardReport& report) {
+    const Slice slice = make_slice(*s.slice, o_.size);
+    NamedValues values = slice_scene_values(slice, c.ambient.value_or(glm::dvec3(0)));
+    for (const auto& [name, value] : c.params) values.try_emplace(name, value);
+    std::vector<PixelJudgement> judgement(slice.pixels.size(), PixelJudgement::measured);
+    for (size_t i = 0; i < slice.pixels.size(); ++i)
+      if (ill_conditioned(pixel_configuration(slice, slice.pixels[i], traits.point_light)))
+        judgement[i] = PixelJudgement::finite_only;
+    SceneSetup scene;
+    scene.width = slice.width;
+    scene.height = slice.height;
+    const fs::path dir = o_.out_dir.empty() ? fs::path() : fs::path(o_.out_dir) / c.name / s.name;
+    if (!dir.empty()) {
+      std::error_code ignored;
+      fs::create_directories(dir, ignored);
+    }
+
+    for (const Variant& v : c.variants)
+      for (const auto& shader : v.shaders) {
+        const Language language = shader.first;
+        if (!wanted(o_.languages, to_string(language))) continue;
+        // The reference: the shader's own twin in double.
+        auto program = program_for(c, v, language);
+        Result<ScenarioReference> reference = program ? Result<ScenarioReference>(ScenarioReference{})
+                                                      : Result<ScenarioReference>(std::unexpected(program.error()));
+        if (program) {
+          auto drawn = draw_cell(twin_, {.c = c, .language = language, .path = ShaderPath::spirv, .program = **program,
+                                         .mesh = slice.mesh, .scene = scene, .values = &values});
+          if (!drawn) {
+            reference = std::unexpected(drawn.error());
+          } else {
+            ScenarioReference& r = *reference;
+            r.width = slice.width;
+            r.height = slice.height;
+            const Image& image = drawn->image;
+            r.rgba = image.exact_rgba.empty() ? std::vector<double>(image.rgba.begin(), image.rgba.end()) : image.exact_rgba;
+            r.judgement = judgement;
+            for (size_t i = 0; i < r.judgement.size(); ++i)
+              if (!image.coverage[i]) r.judgement[i] = PixelJudgement::skipped;
+            if (!dir.empty()) (void)write_png((dir / (v.name + "-" + to_string(language) + ".twin.png")).string(), to_image(r));
+          }
+        }
+        for (BackendSlot& b : backends_) {
+          std::vector<ShaderPath> paths;
+          if (b.backend) paths = (*b.backend)->paths(language);
+          if (paths.empty()) paths = {ShaderPath::spirv};
+          for (ShaderPath path : std::span(paths).first(o_.all_paths ? paths.size() : 1)) {
+            HardRow row{.case_name = c.name, .scenario = s.name, .variant = v.name, .kind = "book",
+                        .language = to_string(language), .backend = b.name, .path = to_string(path)};
+            row.reference = "twin-double";
+            const Result<ScenarioReference>* ref = &reference;
+            auto ok = render_row(c, v, language, b, path, &slice, slice.mesh, values, ref, dir, row);
+            if (!ok) {
+              row.status = CellStatus::error;
+              row.message = ok.error().to_string();
+            } else {
+              explain_worst_pixel(*reference, row);
+            }
+            report.rows.push_back(std::move(row));
+          }
+        }
+      }
+  }
+
+  // The line that loses significance at the row's worst pixel, from the twin's last draw
+  // (this scenario's, in this variant and language: the backends' draws do not touch it).
+  void explain_worst_pixel(const ScenarioReference& reference, HardRow& row) {
+    int worst = row.error.max_relative_pixel;
+    if (row.error.nonfinite_mismatch > 0 && !row_mismatch_pixels_.empty()) worst = row_mismatch_pixels_.front();
+    if (worst < 0) {
+      row.loss_note = "no pixel measured";
+      return;
+    }
+    row.worst_x = worst % reference.width;
+    row.worst_y = worst / reference.width;
+    auto loss = twin_.significance_loss(row.worst_x, row.worst_y);
+    if (!loss) row.loss_note = "trace failed: " + loss.error().to_string();
+    else if (!*loss) row.loss_note = "no instruction loses significance in the fp32 twin";
+    else row.loss = std::move(**loss);
+  }
+
   void run_scenario(const Case& c, Scenario& s, const std::vector<const Variant*>& variants, HardReport& report) {
     std::optional<Slice> slice;
     if (s.slice) slice = make_slice(*s.slice, o_.size);
@@ -272,6 +399,17 @@ class HardRunner {
 
     row.width = reference.width;
     row.error = numerical_error(rendered->image, reference.rgba, reference.judgement);
+    row_mismatch_pixels_.clear();
+    if (row.error.nonfinite_mismatch > 0)
+      for (size_t i = 0; i < reference.judgement.size(); ++i) {
+        if (reference.judgement[i] == PixelJudgement::skipped || reference.judgement[i] == PixelJudgement::undefined) continue;
+        bool render_finite = true, reference_finite = true;
+        for (int k = 0; k < 3; ++k) {
+          render_finite &= std::isfinite(rendered->image.rgba[i * 4 + size_t(k)]);
+          reference_finite &= std::isfinite(reference.rgba[i * 4 + size_t(k)]);
+        }
+        if (render_finite != reference_finite) row_mismatch_pixels_.push_back(int(i));
+      }
     const bool finite_ok = row.error.nonfinite_mismatch == 0;
     const bool error_ok = row.error.max_relative <= kRelativeTolerance;
     row.status = finite_ok && error_ok ? CellStatus::pass : CellStatus::fail;
@@ -304,6 +442,8 @@ class HardRunner {
 
   const HardOptions& o_;
   std::vector<BackendSlot>& backends_;
+  TwinRenderer twin_{twin::Precision::exact};
+  std::vector<int> row_mismatch_pixels_;   // of the last render_row: NaN/Inf on one side only
   ProgramCache programs_{ProgramOptions{.opengl = wanted(o_.backends, "gl")}};
 };
 
@@ -314,6 +454,7 @@ void summarise(HardReport& report) {
     if (!by_case.contains(r.case_name)) order.push_back(r.case_name);
     ModelSummary& s = by_case[r.case_name];
     s.case_name = r.case_name;
+    s.user = r.reference != "model";
     const bool robust = r.kind == "robust";
     s.has_robust |= robust;
     (robust ? s.robust_nonfinite : s.book_nonfinite) += r.error.render_nonfinite;
@@ -344,8 +485,18 @@ Result<HardReport> run_hard_cases(const HardOptions& o) {
 
   HardReport report;
   report.size = o.size | 1;
+  // The user's own cases, each file read as `run --case-file` reads it.
+  std::vector<Case> user_cases;
+  for (const std::string& path : o.user_cases) {
+    auto c = load_case(path);
+    if (!c) return std::unexpected(c.error());
+    if (auto ok = complete_case(*c); !ok) return std::unexpected(ok.error());
+    if (auto ok = check_binding_names(*c); !ok) return std::unexpected(ok.error());
+    user_cases.push_back(std::move(*c));
+  }
   HardRunner runner(o, backends);
   for (const Case& c : *cases) runner.run_case(c, report);
+  for (const Case& c : user_cases) runner.run_user_case(c, report);
   if (report.rows.empty()) return fail(ErrorStage::options, "the filters select nothing to run");
   summarise(report);
   report.wall_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();

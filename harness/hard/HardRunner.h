@@ -15,6 +15,7 @@
 // reverse) and its max relative error is within kRelativeTolerance.
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,7 @@
 #include "core/Error.h"
 #include "core/Image.h"
 #include "report/Results.h"
+#include "twin/SignificanceLoss.h"
 
 namespace shaderbed::hard {
 
@@ -33,6 +35,10 @@ constexpr double kRelativeTolerance = 1e-2;
 
 struct HardOptions {
   std::vector<std::string> cases, backends, languages, scenarios;   // empty = all
+  // Case files of the user's own (`--case path/to/case.toml`): every variant and language of
+  // the case on the slices of user_scenarios() (Scenarios.h), judged against the shader's
+  // own double twin, each row naming the line that loses significance at its worst pixel.
+  std::vector<std::string> user_cases;
   int size = 128;
   bool all_paths = false;                                           // every GL path, not only the first
   std::string out_dir;                                              // slice images, "" = none
@@ -47,6 +53,13 @@ struct HardRow {
   std::string message;
   int width = 0;                                    // of the image, for pixel coordinates
   NumericalError error;
+  std::string reference = "model";                  // "model" (the library), "twin-double" (a user case)
+  // A user case: at the worst pixel (the largest relative error, else the first NaN/Inf on one
+  // side only), the first instruction whose fp32 value departs from the double one by far
+  // more than its operands' (twin::significance_loss).
+  int worst_x = -1, worst_y = -1;
+  std::optional<twin::SignificanceLoss> loss;
+  std::string loss_note;                            // why there is none ("" when loss is set)
 };
 
 struct ModelSummary {
@@ -57,6 +70,7 @@ struct ModelSummary {
   double book_max_relative = 0, robust_max_relative = 0;
   uint64_t book_max_ulps = 0, robust_max_ulps = 0;
   size_t book_failed = 0, robust_failed = 0;                // rows
+  bool user = false;                                        // a user case: every variant is "book", against its twin
 };
 
 struct HardReport {

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
+
+#include <fmt/format.h>
 
 #include "scene/Primitives.h"
 
@@ -122,6 +125,83 @@ std::vector<Scenario> scenarios_for(const std::string& model, int size) {
     MeshScene torus{solid_torus(0.022f, 22.0f, 32, 64), zoomed({0, 22.011, 0}, 0.2)};
     out.push_back({"thin_torus", "a torus with minor radius 0.022 (1e-3 of the major): sliver triangles",
                    std::nullopt, torus, {}});
+  }
+  return out;
+}
+
+namespace {
+
+// A parameter's range as the model documents it (docs/hard-cases.md, docs/tolerances.md):
+// the lobe parameters as the hard cases' lobe_map runs them. nullopt: none documented.
+std::optional<std::pair<double, double>> documented_range(const std::string& model, const std::string& param) {
+  if (auto lobe = lobe_range(model); lobe && lobe->param == param)
+    return std::pair{std::min(lobe->broad, lobe->sharp), std::max(lobe->broad, lobe->sharp)};
+  return std::nullopt;
+}
+
+std::string short_number(double v) { return fmt::format("{:.3g}", v); }
+
+}  // namespace
+
+std::vector<Scenario> user_scenarios(const Case& c, const UserCaseTraits& traits) {
+  std::vector<Scenario> out;
+  for (Scenario& s : scenarios_for(c.model, 0)) {
+    // Mesh scenes are the library's; the lobe map needs a model's lobe parameter, drawn by rows.
+    if (!s.slice || s.slice->layout == NormalLayout::half_angle) continue;
+    const bool point_scenario = s.name == "light_near" || s.name == "light_on_surface";
+    if (point_scenario) continue;   // added below for any point-light shader
+    out.push_back(std::move(s));
+    if (out.back().name == "sphere_coincident") {
+      SliceSpec at_eye = sphere(kView);
+      at_eye.light_at_eye = true;
+      out.push_back({"light_at_eye", "the light at the eye: L = V, and a point light at the eye position", at_eye,
+                     std::nullopt, {}});
+    }
+  }
+  if (traits.point_light) {
+    SliceSpec near{.layout = NormalLayout::plane, .plane_normal = glm::dvec3(0, 1, 0), .light_height = 1e-6};
+    near.to_eye = kView;
+    out.push_back({"light_near", "point light 1e-6 above the surface: distance -> 0, 1/d and 1/d^2 large", near,
+                   std::nullopt, {}});
+    SliceSpec on = near;
+    on.light_height = 0;
+    out.push_back({"light_on_surface", "point light on the surface: d = 0 at the centre pixel (L undefined there)", on,
+                   std::nullopt, {}});
+  }
+  // Every scalar parameter a binding reads, at both ends of its range.
+  std::set<std::string> bound;
+  for (const auto& [language, table] : c.bindings)
+    for (const auto& [uniform, binding] : table)
+      for (const BindingSource& source : binding.sources)
+        if (!source.name.empty()) bound.insert(source.name);
+  for (const auto& [name, value] : c.params) {
+    if (value.size() != 1 || !bound.contains(name)) continue;
+    double low = 0, high = 0;
+    std::string why;
+    if (auto range = documented_range(c.model, name)) {
+      std::tie(low, high) = *range;
+      why = fmt::format("{}'s documented range {} .. {}", c.model, short_number(low), short_number(high));
+    } else if (value[0] != 0) {
+      low = 1e-3 * value[0];
+      high = 1e3 * value[0];
+      why = fmt::format("no range declared: 1e-3 .. 1e3 x the case's {}", short_number(value[0]));
+    } else {
+      continue;   // 0 has no scale to go around
+    }
+    for (const auto& [suffix, v] : {std::pair{"tiny", low}, {"huge", high}})
+      out.push_back({fmt::format("{}_{}", name, suffix),
+                     fmt::format("every normal, L perpendicular to V, {} = {} ({})", name, short_number(v), why),
+                     sphere(kPerpendicular), std::nullopt, {{name, {v}}}});
+  }
+  if (traits.reads_tangent) {
+    SliceSpec zero = sphere(kPerpendicular);
+    zero.tangents = TangentLayout::zero;
+    out.push_back({"tangent_zero", "every normal, L perpendicular to V, tangent attribute (0, 0, 0)", zero,
+                   std::nullopt, {}});
+    SliceSpec parallel = sphere(kPerpendicular);
+    parallel.tangents = TangentLayout::parallel;
+    out.push_back({"tangent_parallel", "every normal, L perpendicular to V, tangent attribute = N", parallel,
+                   std::nullopt, {}});
   }
   return out;
 }

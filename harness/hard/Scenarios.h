@@ -9,6 +9,7 @@
 
 #include "hard/Slice.h"
 #include "pipeline/Mesh.h"
+#include "scene/CaseFile.h"
 #include "scene/Scene.h"
 
 namespace shaderbed::hard {
@@ -29,6 +30,18 @@ struct Scenario {
 // The scenarios that apply to a reference model, in a fixed order (model names as in
 // shaders/cases/*.toml `model`). `size` is the image size for mesh scenes.
 std::vector<Scenario> scenarios_for(const std::string& model, int size);
+
+// A user's case (`hard --case path/to/case.toml`), judged against its own shader in double
+// (the twin): the slices that break naive formulas whatever the shader computes. N.L and
+// N.V through 0, L = V, L = -V, the light at the eye (and for a point light just above and on
+// the surface), long normals, the model's sharpest lobe where it has one, each scalar
+// parameter the shader binds at the two ends of its range, and degenerate tangents when the
+// shader reads a tangent.
+struct UserCaseTraits {
+  bool point_light = false;     // the shader reads light_position (or the case's light is a point)
+  bool reads_tangent = false;   // a vertex input is the tangent or binormal
+};
+std::vector<Scenario> user_scenarios(const Case& c, const UserCaseTraits& traits);
 
 // Every scenario name any model can get, for --scenario checks and docs.
 std::vector<std::string> scenario_names();

@@ -96,7 +96,11 @@ Slice make_slice(const SliceSpec& spec, int size) {
       double length = 1;
       if (spec.long_normals) length += std::pow(10.0, -6 + (x + y) % 3);
       p.normal = glm::vec3(n * length);
-      p.tangent = glm::vec3(t);
+      switch (spec.tangents) {
+        case TangentLayout::perpendicular: p.tangent = glm::vec3(t); break;
+        case TangentLayout::zero: p.tangent = glm::vec3(0); break;
+        case TangentLayout::parallel: p.tangent = glm::vec3(n); break;
+      }
 
       // The quad covering the pixel; its centre is the pixel centre.
       const double cx = -1 + sx * (x + 0.5), cy = 1 - sy * (y + 0.5);
@@ -131,9 +135,41 @@ Slice make_slice(const SliceSpec& spec, int size) {
     s.uniforms["light_position"] = floats4(spec.light_height * plane_n, 1);
   } else {
     s.uniforms["light_vector"] = floats4(l, 0);
-    s.uniforms["light_position"] = floats4(kLightDistance * l, 1);
+    s.uniforms["light_position"] = floats4(spec.light_at_eye ? kEyeDistance * v : kLightDistance * l, 1);
   }
   return s;
+}
+
+NamedValues slice_scene_values(const Slice& slice, const glm::dvec3& ambient) {
+  NamedValues out;
+  const std::vector<double>& t = slice.uniforms.at("transform");
+  glm::dmat4 transform;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) transform[c][r] = t[size_t(c * 4 + r)];
+  // Every vertex has z = 0, so a unit z scale draws the same and makes the matrix invertible.
+  glm::dmat4 invertible = transform;
+  invertible[2][2] = 1;
+  const glm::dmat4 identity(1.0);
+  const auto add = [&](const std::string& name, const glm::dmat4& m, const glm::dmat4& for_inverse) {
+    const auto put = [&](const std::string& n, const glm::dmat4& v) {
+      const double* p = glm::value_ptr(v);
+      out[n] = std::vector<double>(p, p + 16);
+    };
+    put(name, m);
+    put(name + "_inverse", glm::inverse(for_inverse));
+    put(name + "_transpose", glm::transpose(m));
+    put(name + "_inverse_transpose", glm::transpose(glm::inverse(for_inverse)));
+  };
+  for (const char* name : {"world", "view", "world_view"}) add(name, identity, identity);
+  for (const char* name : {"projection", "view_projection", "transform"}) add(name, transform, invertible);
+  const glm::dmat3 identity3(1.0);
+  const double* n = glm::value_ptr(identity3);
+  out["normal_matrix"] = out["normal_matrix_view"] = std::vector<double>(n, n + 9);
+  for (const char* suffix : {"", "_world", "_view"})
+    for (const char* name : {"light_vector", "light_position", "eye_position"})
+      out[std::string(name) + suffix] = slice.uniforms.at(name);
+  out["ambient_light"] = {ambient.x, ambient.y, ambient.z, 1.0};
+  return out;
 }
 
 reference::Configuration pixel_configuration(const Slice& slice, const SlicePixel& pixel, bool point_light,

@@ -46,6 +46,8 @@ constexpr double kMinHalfAngle = 1e-5;          // half_angle: radians from H at
 constexpr double kMaxHalfAngle = 1.5;           // and at the right one
 
 enum class NormalLayout { sphere, lobe, half_angle, plane };
+// The tangent attribute: perpendicular to N (unit), zero, or along N (a degenerate frame).
+enum class TangentLayout { perpendicular, zero, parallel };
 const char* to_string(NormalLayout);
 
 struct SliceSpec {
@@ -58,6 +60,8 @@ struct SliceSpec {
   double row_first = 1, row_last = 1;
   glm::dvec3 plane_normal{0, 0, 1};
   double light_height = 1e-6;      // plane: light above the centre pixel; 0 puts it on the surface
+  bool light_at_eye = false;       // sphere, lobe: the point light at the eye position (L = V)
+  TangentLayout tangents = TangentLayout::perpendicular;
 };
 
 struct SlicePixel {
@@ -81,6 +85,12 @@ struct Slice {
 
 // `size` is the requested width and height; it is rounded up to an odd number.
 Slice make_slice(const SliceSpec& spec, int size);
+
+// Every scene quantity (scene/Scene.h) as the slice sets it: world and view the identity,
+// projection the slice's orthographic transform, object = world = view space, the eye, the
+// lights and `ambient` as the slice and case give them. A user's shader may bind any of
+// them ("view", "normal_matrix", "light_position_world", ...).
+NamedValues slice_scene_values(const Slice& slice, const glm::dvec3& ambient);
 
 // The configuration the GPU evaluates at a pixel, from the float uniforms and attributes
 // (in double): V from the eye position to the pixel centre, L the light_vector (or, for

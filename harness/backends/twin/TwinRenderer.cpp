@@ -227,6 +227,13 @@ Result<std::optional<twin::ValueOrigin>> TwinRenderer::nonfinite_origin(int x, i
   return *origin;
 }
 
+Result<std::optional<twin::SignificanceLoss>> TwinRenderer::significance_loss(int x, int y) const {
+  if (!last_) return std::unexpected(Error{.message = "the twin has drawn nothing yet", .stage = ErrorStage::twin});
+  auto loss = twin::significance_loss(last_->input(precision_, 1), x, y);
+  if (!loss) return std::unexpected(twin_error(loss.error()));
+  return *loss;
+}
+
 Result<std::array<double, 4>> TwinRenderer::wide_pixel(int x, int y) const {
   if (!last_) return std::unexpected(Error{.message = "the twin has drawn nothing yet", .stage = ErrorStage::twin});
   auto pixel = twin::wide_pixel(last_->input(precision_, 1), x, y);

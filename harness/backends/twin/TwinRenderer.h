@@ -11,6 +11,7 @@
 
 #include "backends/Backend.h"
 #include "twin/Precision.h"
+#include "twin/SignificanceLoss.h"
 #include "twin/TwinDraw.h"
 #include "twin/ValueOrigin.h"
 
@@ -31,6 +32,10 @@ class TwinRenderer final : public Backend {
   // Of the last image render() drew: the instruction that first computed a NaN or Inf at
   // pixel (x, y); nothing when every value there is finite.
   Result<std::optional<twin::ValueOrigin>> nonfinite_origin(int x, int y) const;
+  // Of the last image: the first instruction at pixel (x, y) whose fp32 result departs from
+  // the double one by far more than its operands do (twin::significance_loss); nothing when
+  // none does.
+  Result<std::optional<twin::SignificanceLoss>> significance_loss(int x, int y) const;
   // Of the last image: pixel (x, y) with both stages in quad precision (twin::wide_pixel).
   Result<std::array<double, 4>> wide_pixel(int x, int y) const;
   // The last draw's program (null before a draw).

@@ -1,6 +1,8 @@
-// `shaderbed hard [--case A,B] [--backend ..] [--lang ..] [--scenario ..] [--size N] [--json FILE] [--out DIR]`:
+// `shaderbed hard [--case A,B | path/to/case.toml] [--backend ..] [--lang ..] [--scenario ..] [--size N] [--json FILE] [--out DIR]`:
 // the hard-case suite (docs/hard-cases.md): per model, NaN/Inf counts, max relative
-// error and ULPs of the book variants and the robust one on slices and hard geometry.
+// error and ULPs of the book variants and the robust one on slices and hard geometry; for
+// a user's case file, its shader against its own double twin and the line that loses
+// significance at the worst pixel.
 #include <fstream>
 #include <memory>
 
@@ -19,8 +21,12 @@ Command add_hard_command(CLI::App& app) {
       "hard",
       "Run the hard-case suite: parameter-space slices (one configuration per pixel) and hard geometry, on both "
       "backends against the double reference; per model NaN/Inf counts, max relative error and ULPs of the book "
-      "variants (vertex, pixel) and the robust one (pixel_robust). Exit 1 if a row fails.");
-  cmd->add_option("--case", o->cases, "Cases to run (default: all)")->delimiter(',');
+      "variants (vertex, pixel) and the robust one (pixel_robust). Given a case file of your own (--case "
+      "path/to/case.toml), runs its shaders on the same slices against their own double twin and names the line "
+      "that loses significance at each row's worst pixel. Exit 1 if a row fails.");
+  cmd->add_option("--case", o->cases,
+                  "Library cases to run (default: all), or case files of your own (a path ending in .toml)")
+      ->delimiter(',');
   cmd->add_option("--backend", o->backends, "vulkan, gl (default: both)")->delimiter(',');
   cmd->add_option("--lang", o->languages, "glsl, hlsl, cg (default: all)")->delimiter(',');
   cmd->add_option("--scenario", o->scenarios, "Scenarios to run (default: all that apply)")->delimiter(',');
@@ -32,6 +38,11 @@ Command add_hard_command(CLI::App& app) {
   cmd->add_option("--out", o->out_dir, "Write images (render, reference, relative error, value mask) here");
   return {cmd, [o, json_path] {
             o->progress = [](const std::string& step) { fmt::print(stderr, "hard: {}\n", step); };
+            // A path to a .toml file is the user's own case; a bare name is the library's.
+            std::vector<std::string> names;
+            for (const std::string& c : o->cases)
+              (c.ends_with(".toml") ? o->user_cases : names).push_back(c);
+            o->cases = std::move(names);
             auto report = hard::run_hard_cases(*o);
             if (!report) {
               fmt::print(stderr, "shaderbed: hard: {}\n", report.error().to_string());

@@ -1,0 +1,40 @@
+#pragma once
+// How an instruction and its values read in a message: numbers, an instruction's operation
+// ("OpFSub", "GLSL.std.450 Pow") and its value operands, and the names of values (OpName,
+// or the variable an unnamed load read). Shared by the twin's explanations (ValueOrigin,
+// SignificanceLoss).
+#include <cstdint>
+#include <map>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "twin/Module.h"
+
+namespace twin {
+
+// "0.5", "NaN", "+Inf" (9 significant digits).
+std::string number_text(double v);
+// One value as number_text, several as "(a, b, c)".
+std::string values_text(const std::vector<double>& values);
+
+// The operation an instruction performs, for messages: "OpFDiv", "GLSL.std.450 Sqrt".
+std::string operation_name(const Module& m, const Instruction& in);
+// The instruction's operand words that are values (an OpExtInst's set and opcode skipped).
+std::span<const uint32_t> value_operands(const Module& m, const Instruction& in);
+
+// The source line an instruction carries ({"", 0} when none).
+const SourceLine& line_of(const Module& m, const Instruction& in);
+
+// Names of values: OpName, else the name of the variable an unnamed OpLoad read, else %id.
+class ValueNames {
+ public:
+  explicit ValueNames(const Module& m);
+  std::string operator()(uint32_t id) const;
+
+ private:
+  const Module& m_;
+  std::map<uint32_t, uint32_t> loaded_from_;
+};
+
+}  // namespace twin
