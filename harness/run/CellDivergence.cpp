@@ -74,6 +74,20 @@ CellResult::Divergence divergence_result(const twin::Divergence& d) {
   return r;
 }
 
+Result<void> CellDivergence::draw_twins(GroupDrawer& drawer, const CellGroup& group, const PlannedCell& cell,
+                                        const CellResult& row) {
+  CellResult scratch = row;
+  const TimingRequest once{.warmup = 0, .runs = 0};
+  if (auto drawn = drawer.draw(*group.variant, {cell.language, &port_slot_, ShaderPath::spirv}, once, scratch); !drawn)
+    return fail(ErrorStage::twin, "the shader's twin could not draw it: " + drawn.error().to_string());
+  if (!group.reference_cell || !group.reference_variant) return {};
+  if (auto drawn = drawer.draw(*group.reference_variant, {group.reference_cell->language, &original_slot_, ShaderPath::spirv},
+                               once, scratch);
+      !drawn)
+    return fail(ErrorStage::twin, "the original's twin could not draw it: " + drawn.error().to_string());
+  return {};
+}
+
 CellResult::Divergence CellDivergence::locate(GroupDrawer& drawer, const CellGroup& group, const PlannedCell& cell,
                                               const CellResult& row, std::span<const twin::PixelAt> pixels) {
   const auto key = std::pair{group.variant, cell.language};
@@ -81,15 +95,7 @@ CellResult::Divergence CellDivergence::locate(GroupDrawer& drawer, const CellGro
   CellResult::Divergence& result = found_[key];
   if (!group.reference_cell || !group.reference_variant) return result = error_result("the case names no original");
   if (pixels.empty()) return result = error_result("no interior pixel to trace");
-  CellResult scratch = row;
-  const TimingRequest once{.warmup = 0, .runs = 0};
-  if (auto drawn = drawer.draw(*group.variant, {cell.language, &port_slot_, ShaderPath::spirv}, once, scratch); !drawn)
-    return result = error_result("the port's twin could not draw it: " + drawn.error().to_string());
-  CellResult original_row = row;
-  if (auto drawn = drawer.draw(*group.reference_variant, {group.reference_cell->language, &original_slot_, ShaderPath::spirv},
-                               once, original_row);
-      !drawn)
-    return result = error_result("the original's twin could not draw it: " + drawn.error().to_string());
+  if (auto drawn = draw_twins(drawer, group, cell, row); !drawn) return result = error_result(drawn.error().message);
   const auto port_input = port_->last_input();
   const auto original_input = original_->last_input();
   auto port_trace = twin::trace_program(*port_input, pixels);
@@ -105,6 +111,31 @@ CellResult::Divergence CellDivergence::locate(GroupDrawer& drawer, const CellGro
       found = twin::into_vertex_stage(found, *port_vertex, twin::counterparts_of(*original_vertex));
   }
   return result = divergence_result(found);
+}
+
+Result<PixelExplanation> CellDivergence::explain(GroupDrawer& drawer, const CellGroup& group, const PlannedCell& cell,
+                                                 const CellResult& row, int x, int y,
+                                                 std::span<const twin::PixelAt> context) {
+  if (auto drawn = draw_twins(drawer, group, cell, row); !drawn) return std::unexpected(drawn.error());
+  const bool differential = group.reference_cell && group.reference_variant;
+  std::vector<twin::PixelAt> pixels{{x, y}};
+  for (const twin::PixelAt& p : context)
+    if (p.x != x || p.y != y) pixels.push_back(p);
+  auto port_trace = twin::trace_program(*port_->last_input(), pixels);
+  if (!port_trace) return fail(ErrorStage::twin, "the shader's twin could not trace it: " + port_trace.error().to_string());
+  if (port_trace->values.empty() || !std::ranges::any_of(port_trace->values, [](const auto& v) { return v.present[0] != 0; }))
+    return fail(ErrorStage::twin, "pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") is not covered by the shape");
+  PixelExplanation out{x, y, "", {}};
+  std::vector<twin::Counterpart> counterparts;
+  if (differential) {
+    auto original_trace = twin::trace_program(*original_->last_input(), pixels);
+    if (!original_trace)
+      return fail(ErrorStage::twin, "the original's twin could not trace it: " + original_trace.error().to_string());
+    counterparts = twin::counterparts_of(*original_trace);
+    out.against = "the original";
+  }
+  out.lines = twin::pixel_listing(*port_trace, 0, counterparts);
+  return out;
 }
 
 }  // namespace shaderbed

@@ -14,6 +14,7 @@
 #include "run/CellPlan.h"
 #include "run/CellReference.h"
 #include "twin/Divergence.h"
+#include "twin/PixelListing.h"
 
 namespace shaderbed {
 
@@ -23,6 +24,14 @@ std::vector<twin::PixelAt> divergence_pixels(const Image& render, const Referenc
                                              const std::vector<PixelClass>& classes, size_t failing = 12,
                                              size_t spread = 20);
 
+// One pixel of a cell's shader, line by line (twin/PixelListing.h): what `shaderbed
+// explain --pixel` prints and the viewer's inspector shows.
+struct PixelExplanation {
+  int x = 0, y = 0;
+  std::string against;                   // "the original" (values matched), or "" (none)
+  std::vector<twin::ListedLine> lines;   // the fragment stage's, at the pixel
+};
+
 class CellDivergence {
  public:
   CellDivergence();
@@ -30,8 +39,16 @@ class CellDivergence {
   // Failing cell `row` of a differential group, at `pixels`.
   CellResult::Divergence locate(GroupDrawer& drawer, const CellGroup& group, const PlannedCell& cell,
                                 const CellResult& row, std::span<const twin::PixelAt> pixels);
+  // Pixel (x, y) of cell `row`'s shader, by its double twin, with the original's matches
+  // when the group has one (matched over `context` pixels as well as this one).
+  Result<PixelExplanation> explain(GroupDrawer& drawer, const CellGroup& group, const PlannedCell& cell,
+                                   const CellResult& row, int x, int y, std::span<const twin::PixelAt> context);
 
  private:
+  // Both twins drawn for `cell` (the original's only when the group has one); the error
+  // says which could not be.
+  Result<void> draw_twins(GroupDrawer& drawer, const CellGroup& group, const PlannedCell& cell, const CellResult& row);
+
   BackendSlot port_slot_, original_slot_;   // two twins: both draws stay traceable
   TwinRenderer *port_ = nullptr, *original_ = nullptr;
   std::map<std::pair<const Variant*, Language>, CellResult::Divergence> found_;
