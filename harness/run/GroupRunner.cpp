@@ -153,6 +153,7 @@ struct GroupRunner::Impl final : GroupDrawer {
       } else {
         if (r.reference.is_reference)
           r.message = "the reference: every other cell of this case is judged against this render of the original";
+        if (explain_ && r.id() == explain_->first) explain_pixel(g, cell, r, *image, group_image, reference.get());
         if (twins_.enabled()) {
           r.twin = twins_.figures(*this, *g.variant, cell, r, *image, group_image && *group_image ? &**group_image : nullptr);
           // A note on a passing cell too: desktop drivers hide what a 16-bit device shows.
@@ -519,12 +520,42 @@ struct GroupRunner::Impl final : GroupDrawer {
   std::vector<PixelClass> classes_;                 // its reference, classified once for all its cells
   CellTwins twins_;                                 // --twin
   CellDivergence divergences_;                      // where a failing port departs
+ public:
+  std::optional<std::pair<std::string, std::optional<twin::PixelAt>>> explain_;   // request_explanation
+  std::optional<Result<PixelExplanation>> explanation_;
+
+ private:
+  // explain_'s pixel of cell r (rendered as `image`), or where it is furthest from its
+  // reference, traced against the context of divergence_pixels.
+  void explain_pixel(const CellGroup& g, const PlannedCell& cell, const CellResult& r, const Image& image,
+                     const Result<ReferenceImage>* group_image, const CellReference* reference) {
+    std::vector<twin::PixelAt> context;
+    std::optional<ReferenceImage> own;
+    const ReferenceImage* against = group_image && *group_image ? &**group_image : nullptr;
+    if (!against && reference)
+      if (auto image_of = reference->cell_image(r)) own = std::move(*image_of), against = &*own;
+    if (against) context = divergence_pixels(image, *against, classify_pixels(*against));
+    std::optional<twin::PixelAt> pixel = explain_->second;
+    if (!pixel && !context.empty()) pixel = context.front();
+    if (!pixel) {
+      explanation_ = fail(ErrorStage::twin, "no pixel of the shape to explain: name one with --pixel X,Y");
+      return;
+    }
+    explanation_ = divergences_.explain(*this, g, cell, r, pixel->x, pixel->y, context);
+  }
 };
 
 GroupRunner::GroupRunner(const CellSettings& settings, const SceneSetup& scene, const StoredReferences& stored,
                          bool gl_programs, StepObserver on_step)
     : impl_(std::make_unique<Impl>(settings, scene, stored, gl_programs, std::move(on_step))) {}
 GroupRunner::~GroupRunner() = default;
+
+void GroupRunner::request_explanation(std::string cell_id, std::optional<twin::PixelAt> pixel) {
+  impl_->explain_ = std::pair{std::move(cell_id), pixel};
+  impl_->explanation_.reset();
+}
+
+std::optional<Result<PixelExplanation>> GroupRunner::take_explanation() { return std::exchange(impl_->explanation_, std::nullopt); }
 
 std::vector<CellResult> GroupRunner::run(const CellGroup& g) { return impl_->run(g); }
 

@@ -5,9 +5,12 @@
 // A worker keeps one GroupRunner for all its groups: programs, meshes, LUTs and what the
 // references prepare are shared between them.
 #include <memory>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "report/Results.h"
+#include "run/CellDivergence.h"
 #include "run/CellPlan.h"
 #include "run/RunOptions.h"
 #include "run/StoredImages.h"
@@ -27,6 +30,11 @@ class GroupRunner {
 
   // Every cell of the group, in the group's order.
   std::vector<CellResult> run(const CellGroup& g);
+
+  // The next run() also explains one pixel of cell `cell_id` (`shaderbed explain`): `pixel`,
+  // else where the cell is furthest from its reference. take_explanation() has it after.
+  void request_explanation(std::string cell_id, std::optional<twin::PixelAt> pixel);
+  std::optional<Result<PixelExplanation>> take_explanation();
 
  private:
   struct Impl;
