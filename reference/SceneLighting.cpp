@@ -1,6 +1,8 @@
 #include "reference/SceneLighting.h"
 
+#include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 
 #include "reference/ModelRegistry.h"
@@ -16,13 +18,44 @@ class PointLit final : public LightingModel {
   explicit PointLit(std::unique_ptr<const LightingModel> model) : model_(std::move(model)) {}
 
   glm::dvec3 shade(const SurfacePoint& point, const ObjectSpaceLighting& lighting) const override {
-    ObjectSpaceLighting at_point = lighting;
-    at_point.light_direction = lighting.to_light.value_or(stable::normalize(lighting.light_position - point.position));
-    return model_->shade(point, at_point);
+    return model_->shade(point, lit(point, lighting));
+  }
+
+  // The model's quantities, its "L" being the point light's; before them the vector to the
+  // light and its length, which a point-light shader computes first.
+  void quantities(const SurfacePoint& point, const ObjectSpaceLighting& lighting, QuantitySink& sink) const override {
+    const glm::dvec3 to_light = lighting.light_position - point.position;
+    sink.vector("light_position−P", to_light, VectorKind::displacement);
+    sink.scalar("d", stable::length(to_light));
+    model_->quantities(point, lit(point, lighting), sink);
   }
 
  private:
+  static ObjectSpaceLighting lit(const SurfacePoint& point, const ObjectSpaceLighting& lighting) {
+    ObjectSpaceLighting at_point = lighting;
+    at_point.light_direction = lighting.to_light.value_or(stable::normalize(lighting.light_position - point.position));
+    return at_point;
+  }
+
   std::unique_ptr<const LightingModel> model_;
+};
+
+// Passes a model's quantities on, its "colour" as "model colour", and keeps that colour.
+class ModelColour final : public QuantitySink {
+ public:
+  explicit ModelColour(QuantitySink& sink) : sink_(sink) {}
+
+  void scalar(std::string_view name, double value) override { sink_.scalar(name, value); }
+  void vector(std::string_view name, const glm::dvec3& value, VectorKind kind) override {
+    if (name != "colour") return sink_.vector(name, value, kind);
+    colour = value;
+    sink_.vector("model colour", value, kind);
+  }
+
+  std::optional<glm::dvec3> colour;
+
+ private:
+  QuantitySink& sink_;
 };
 
 // The model's colour plus the ambient light's.
@@ -33,6 +66,16 @@ class WithAmbient final : public LightingModel {
 
   glm::dvec3 shade(const SurfacePoint& point, const ObjectSpaceLighting& lighting) const override {
     return model_->shade(point, lighting) + ambient_;
+  }
+
+  // The model's quantities, its colour as "model colour" (the same value as its shade()),
+  // then the scene's "ambient_light" and the sum, "colour": shade()'s sum of the same values.
+  void quantities(const SurfacePoint& point, const ObjectSpaceLighting& lighting, QuantitySink& sink) const override {
+    ModelColour model_sink(sink);
+    model_->quantities(point, lighting, model_sink);
+    const glm::dvec3 model_colour = model_sink.colour ? *model_sink.colour : model_->shade(point, lighting);
+    sink.vector("ambient_light", ambient_, VectorKind::colour);
+    sink.vector("colour", model_colour + ambient_, VectorKind::colour);
   }
 
  private:

@@ -1,17 +1,21 @@
 // Ambient: a constant colour, the ambient term on its own (book §2.5).
 #include "reference/Parameters.h"
+#include "reference/models/Evaluated.h"
 #include "reference/models/Models.h"
 
 namespace reference {
 namespace {
 
-class Ambient final : public LightingModel {
+class Ambient final : public EvaluatedModel {
  public:
   explicit Ambient(const glm::dvec3& ambient) : ambient_(ambient) {}
 
-  glm::dvec3 shade(const SurfacePoint&, const ObjectSpaceLighting&) const override { return ambient_; }
-
  private:
+  glm::dvec3 evaluate(const SurfacePoint&, const ObjectSpaceLighting&, Report report) const override {
+    report.colour("ambient", ambient_);
+    return ambient_;
+  }
+
   glm::dvec3 ambient_;
 };
 

@@ -3,20 +3,29 @@
 #include <algorithm>
 
 #include "reference/Parameters.h"
+#include "reference/models/Evaluated.h"
 #include "reference/models/Models.h"
 
 namespace reference {
 namespace {
 
-class Lambert final : public LightingModel {
+class Lambert final : public EvaluatedModel {
  public:
   explicit Lambert(const glm::dvec3& diffuse) : diffuse_(diffuse) {}
 
-  glm::dvec3 shade(const SurfacePoint& point, const ObjectSpaceLighting& lighting) const override {
-    return diffuse_ * std::max(0.0, glm::dot(point.normal, lighting.light_direction));
+ private:
+  glm::dvec3 evaluate(const SurfacePoint& point, const ObjectSpaceLighting& lighting, Report report) const override {
+    report.normal("N", point.normal);
+    report.direction("L", lighting.light_direction);
+    const double n_dot_l = glm::dot(point.normal, lighting.light_direction);
+    report.scalar("N·L", n_dot_l);
+    const double lit = std::max(0.0, n_dot_l);
+    report.scalar("sat(N·L)", lit);
+    const glm::dvec3 diffuse = diffuse_ * lit;
+    report.colour("diffuse", diffuse);
+    return diffuse;
   }
 
- private:
   glm::dvec3 diffuse_;
 };
 

@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "reference/Parameters.h"
+#include "reference/models/Evaluated.h"
 #include "reference/models/Models.h"
 #include "reference/models/Shading.h"
 
@@ -20,19 +21,36 @@ using shading::sat;
 
 constexpr double min_projection_length_squared = 1e-12;
 
-class OrenNayar final : public LightingModel {
+class OrenNayar final : public EvaluatedModel {
  public:
   OrenNayar(const glm::dvec3& diffuse, double roughness_sq)
       : diffuse_(diffuse),
         a_(1.0 - 0.5 * roughness_sq / (roughness_sq + 0.33)),
         b_(0.45 * roughness_sq / (roughness_sq + 0.09)) {}
 
-  glm::dvec3 shade(const SurfacePoint& point, const ObjectSpaceLighting& lighting) const override {
+ private:
+  glm::dvec3 evaluate(const SurfacePoint& point, const ObjectSpaceLighting& lighting, Report report) const override {
     const glm::dvec3& normal = point.normal;
     const glm::dvec3& to_light = lighting.light_direction;
     const glm::dvec3 to_eye = shading::to_eye(point, lighting);
+    report.normal("N", normal);
+    report.direction("L", to_light);
+    report.direction("V", to_eye);
+    report.scalar("A", a_);
+    report.scalar("B", b_);
     const double n_dot_l = glm::dot(normal, to_light);
     const double n_dot_v = glm::dot(normal, to_eye);
+    report.scalar("N·L", n_dot_l);
+    report.scalar("N·V", n_dot_v);
+    if (report) {
+      // The angles as the book's shader computes them; the model works with the cosines.
+      const double theta_i = shading::clamped_acos(n_dot_l), theta_r = shading::clamped_acos(n_dot_v);
+      report.scalar("sat(N·L)", sat(n_dot_l));
+      report.scalar("θi", theta_i);
+      report.scalar("θr", theta_r);
+      report.scalar("α", std::max(theta_i, theta_r));
+      report.scalar("β", std::min(theta_i, theta_r));
+    }
 
     if (n_dot_l <= 0) return glm::dvec3(0.0);
     // sin(alpha) and tan(beta) from the cosines: alpha = max(theta) has the smaller
@@ -43,18 +61,34 @@ class OrenNayar final : public LightingModel {
     const double cos_beta = std::clamp(std::max(n_dot_l, n_dot_v), -1.0, 1.0);
     const double sin_alpha = std::sqrt(1 - cos_alpha * cos_alpha);
     const double tan_beta = std::sqrt(1 - cos_beta * cos_beta) / cos_beta;   // cos_beta >= N.L > 0
+    report.scalar("cos α", cos_alpha);
+    report.scalar("cos β", cos_beta);
+    report.scalar("sin α", sin_alpha);
+    report.scalar("tan β", tan_beta);
 
     const glm::dvec3 eye_in_plane = to_eye - normal * n_dot_v;
     const glm::dvec3 light_in_plane = to_light - normal * n_dot_l;
+    report.direction("V − N(N·V)", eye_in_plane);
+    report.direction("L − N(N·L)", light_in_plane);
     double cos_c = 0.0;
     if (glm::dot(eye_in_plane, eye_in_plane) >= min_projection_length_squared &&
         glm::dot(light_in_plane, light_in_plane) >= min_projection_length_squared) {
-      cos_c = sat(glm::dot(glm::normalize(eye_in_plane), glm::normalize(light_in_plane)));
+      const glm::dvec3 eye_direction = glm::normalize(eye_in_plane), light_direction = glm::normalize(light_in_plane);
+      report.direction("normalize(V − N(N·V))", eye_direction);
+      report.direction("normalize(L − N(N·L))", light_direction);
+      const double projected = glm::dot(eye_direction, light_direction);
+      report.scalar("cos(φr − φi)", projected);
+      cos_c = sat(projected);
     }
-    return diffuse_ * (n_dot_l * (a_ + b_ * cos_c * sin_alpha * tan_beta));
+    report.scalar("cosC", cos_c);
+    if (report) report.scalar("sin α tan β", sin_alpha * tan_beta);
+    const double factor = a_ + b_ * cos_c * sin_alpha * tan_beta;
+    report.scalar("A + B cosC sin α tan β", factor);
+    const double scale = n_dot_l * factor;
+    report.scalar("sat(N·L) (A + B cosC sin α tan β)", scale);
+    return diffuse_ * scale;
   }
 
- private:
   glm::dvec3 diffuse_;
   double a_;
   double b_;

@@ -10,19 +10,27 @@ namespace {
 
 using shading::sat;
 
-class PointAttenuated final : public LightingModel {
+class PointAttenuated final : public EvaluatedModel {
  public:
   PointAttenuated(const glm::dvec3& diffuse, const glm::dvec3& light_color, const glm::dvec3& attenuation)
       : diffuse_(diffuse), light_color_(light_color), attenuation_(attenuation) {}
 
-  glm::dvec3 shade(const SurfacePoint& point, const ObjectSpaceLighting& lighting) const override {
+ private:
+  glm::dvec3 evaluate(const SurfacePoint& point, const ObjectSpaceLighting& lighting, Report report) const override {
     const shading::PointLight light = shading::point_light(point, lighting);
-    return diffuse_ * light_color_ *
-           (sat(glm::dot(point.normal, light.direction)) /
-            shading::attenuation_denominator(attenuation_, light.distance));
+    shading::report_point_light(report, point, lighting, light);
+    const double n_dot_l = glm::dot(point.normal, light.direction);
+    report.scalar("N·Lp", n_dot_l);
+    report.scalar("sat(N·Lp)", sat(n_dot_l));
+    const double denominator = shading::attenuation_denominator(attenuation_, light.distance);
+    report.scalar("A d² + B d + C", denominator);
+    if (report) report.scalar("attenuation", 1.0 / denominator);
+    const double factor = sat(n_dot_l) / denominator;
+    report.scalar("sat(N·Lp)/(A d² + B d + C)", factor);
+    if (report) report.colour("diffuse light_color", diffuse_ * light_color_);
+    return diffuse_ * light_color_ * factor;
   }
 
- private:
   glm::dvec3 diffuse_;
   glm::dvec3 light_color_;
   glm::dvec3 attenuation_;

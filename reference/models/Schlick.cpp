@@ -2,6 +2,7 @@
 // with the directional light; the rational function replaces Phong's pow. Not gated by
 // N·L (errata E7).
 #include "reference/Parameters.h"
+#include "reference/models/Evaluated.h"
 #include "reference/models/Models.h"
 #include "reference/models/Shading.h"
 
@@ -10,33 +11,54 @@ namespace {
 
 using shading::sat;
 
-class Schlick final : public LightingModel {
+class Schlick final : public EvaluatedModel {
  public:
   Schlick(const glm::dvec3& diffuse, const glm::dvec3& specular, double power)
       : diffuse_(diffuse), specular_(specular), power_(power) {}
 
-  glm::dvec3 shade(const SurfacePoint& point, const ObjectSpaceLighting& lighting) const override {
+ private:
+  glm::dvec3 evaluate(const SurfacePoint& point, const ObjectSpaceLighting& lighting, Report report) const override {
     const glm::dvec3& normal = point.normal;
     const glm::dvec3& to_light = lighting.light_direction;
+    report.normal("N", normal);
+    report.direction("L", to_light);
     // t = sat(R·V); the denominator n - (n - 1) t = n (1 - t) + t with 1 - t from the
     // angle between R and V, which does not cancel near the mirror direction.
     // (Up to plain_power_limit the book's form: (n - 1) times t's rounding stays small.)
     const glm::dvec3 reflection = shading::reflection(normal, to_light);
     const glm::dvec3 to_eye = shading::to_eye(point, lighting);
+    report.direction("R", reflection);
+    report.direction("V", to_eye);
     double highlight;
     if (shading::plain_power(power_)) {
-      const double t = sat(glm::dot(reflection, to_eye));
-      highlight = t / (power_ - (power_ - 1.0) * t);
+      const double r_dot_v = glm::dot(reflection, to_eye);
+      report.scalar("R·V", r_dot_v);
+      const double t = sat(r_dot_v);
+      report.scalar("t", t);
+      const double denominator = power_ - (power_ - 1.0) * t;
+      report.scalar("power − (power − 1) t", denominator);
+      highlight = t / denominator;
     } else {
       const shading::Angle angle = shading::angle_between(reflection, to_eye);
+      report.scalar("R·V", angle.cos);
       const double t = sat(angle.cos);
+      report.scalar("t", t);
       const double one_minus_t = angle.cos > 0 ? angle.one_minus_cos() : 1.0;
-      highlight = t / (power_ * one_minus_t + t);
+      const double denominator = power_ * one_minus_t + t;
+      report.scalar("power − (power − 1) t", denominator);
+      highlight = t / denominator;
     }
-    return diffuse_ * sat(glm::dot(normal, to_light)) + specular_ * highlight;
+    report.scalar("t / (power − (power − 1) t)", highlight);
+    const double n_dot_l = glm::dot(normal, to_light);
+    report.scalar("N·L", n_dot_l);
+    report.scalar("sat(N·L)", sat(n_dot_l));
+    const glm::dvec3 diffuse = diffuse_ * sat(n_dot_l);
+    const glm::dvec3 specular = specular_ * highlight;
+    report.colour("diffuse", diffuse);
+    report.colour("specular", specular);
+    return diffuse + specular;
   }
 
- private:
   glm::dvec3 diffuse_;
   glm::dvec3 specular_;
   double power_;

@@ -8,6 +8,7 @@
 
 #include "reference/LightingModel.h"
 #include "reference/StableVector.h"
+#include "reference/models/Evaluated.h"
 
 namespace reference::shading {
 
@@ -105,6 +106,16 @@ inline PointLight point_light(const SurfacePoint& point, const ObjectSpaceLighti
     return {to_light / distance, distance};
   }
   return {stable::detail::scaled_normalize(to_light), stable::detail::scaled_length(to_light)};
+}
+
+// point_light()'s quantities: the unnormalised light_position − P, d and Lp, and N.
+inline void report_point_light(Report report, const SurfacePoint& point, const ObjectSpaceLighting& lighting,
+                               const PointLight& light) {
+  if (!report) return;
+  report.normal("N", point.normal);
+  report.displacement("light_position−P", lighting.light_position - point.position);
+  report.scalar("d", light.distance);
+  report.direction("Lp", light.direction);
 }
 
 // The generalised attenuation's denominator A d² + B d + C (book §2.3.2), (A, B, C) =

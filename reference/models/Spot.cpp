@@ -16,7 +16,7 @@ namespace {
 
 using shading::sat;
 
-class Spot final : public LightingModel {
+class Spot final : public EvaluatedModel {
  public:
   Spot(const glm::dvec3& diffuse, const glm::dvec3& light_color, const glm::dvec3& attenuation, double cos_umbra,
        double cos_penumbra, double falloff)
@@ -27,21 +27,36 @@ class Spot final : public LightingModel {
         cos_penumbra_(cos_penumbra),
         falloff_(falloff) {}
 
-  glm::dvec3 shade(const SurfacePoint& point, const ObjectSpaceLighting& lighting) const override {
+ private:
+  glm::dvec3 evaluate(const SurfacePoint& point, const ObjectSpaceLighting& lighting, Report report) const override {
     const shading::PointLight light = shading::point_light(point, lighting);
+    shading::report_point_light(report, point, lighting, light);
+    report.direction("L", lighting.light_direction);
     const double cos_theta = glm::dot(light.direction, lighting.light_direction);
+    report.scalar("Lp·L", cos_theta);
     double spot = 0.0;
     if (cos_theta >= cos_umbra_) {
       spot = 1.0;
     } else if (cos_theta > cos_penumbra_) {
-      spot = std::pow((cos_theta - cos_penumbra_) / (cos_umbra_ - cos_penumbra_), falloff_);
+      const double ramp = (cos_theta - cos_penumbra_) / (cos_umbra_ - cos_penumbra_);
+      report.scalar("(cosθ − cos_penumbra)/(cos_umbra − cos_penumbra)", ramp);
+      spot = std::pow(ramp, falloff_);
     }
-    return diffuse_ * light_color_ *
-           (spot * sat(glm::dot(point.normal, light.direction)) /
-            shading::attenuation_denominator(attenuation_, light.distance));
+    report.scalar("spot", spot);
+    const double n_dot_l = glm::dot(point.normal, light.direction);
+    report.scalar("N·Lp", n_dot_l);
+    report.scalar("sat(N·Lp)", sat(n_dot_l));
+    const double denominator = shading::attenuation_denominator(attenuation_, light.distance);
+    report.scalar("A d² + B d + C", denominator);
+    if (report) report.scalar("attenuation", 1.0 / denominator);
+    const double lit = spot * sat(n_dot_l);
+    report.scalar("spot sat(N·Lp)", lit);
+    const double factor = lit / denominator;
+    report.scalar("spot sat(N·Lp)/(A d² + B d + C)", factor);
+    if (report) report.colour("diffuse light_color", diffuse_ * light_color_);
+    return diffuse_ * light_color_ * factor;
   }
 
- private:
   glm::dvec3 diffuse_;
   glm::dvec3 light_color_;
   glm::dvec3 attenuation_;

@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "reference/Parameters.h"
+#include "reference/models/Evaluated.h"
 #include "reference/models/Models.h"
 #include "reference/models/Shading.h"
 
@@ -17,7 +18,7 @@ namespace {
 
 using shading::sat;
 
-class WardIsotropic final : public LightingModel {
+class WardIsotropic final : public EvaluatedModel {
  public:
   WardIsotropic(const glm::dvec3& diffuse, const glm::dvec3& specular, double roughness)
       : diffuse_(diffuse),
@@ -26,32 +27,61 @@ class WardIsotropic final : public LightingModel {
         roughness_squared_(roughness * roughness),
         normalisation_(1.0 / (4.0 * std::numbers::pi * roughness * roughness)) {}
 
-  glm::dvec3 shade(const SurfacePoint& point, const ObjectSpaceLighting& lighting) const override {
+ private:
+  glm::dvec3 evaluate(const SurfacePoint& point, const ObjectSpaceLighting& lighting, Report report) const override {
     const glm::dvec3& normal = point.normal;
     const glm::dvec3& to_light = lighting.light_direction;
     const glm::dvec3 to_eye = shading::to_eye(point, lighting);
+    report.normal("N", normal);
+    report.direction("L", to_light);
+    report.direction("V", to_eye);
     const double n_dot_l = glm::dot(normal, to_light);
     const double n_dot_v = glm::dot(normal, to_eye);
+    report.scalar("N·L", n_dot_l);
+    report.scalar("N·V", n_dot_v);
+    report.scalar("sat(N·L)", sat(n_dot_l));
+    report.scalar("1/(4π σ²)", normalisation_);
     glm::dvec3 spec(0.0);
     if (n_dot_l > 0 && n_dot_v > 0) {
       // tan(gamma) = |N × H| / N·H from the unnormalised L + V: (1 - (N·H)²) cancels near
       // the peak, where a sharp lobe magnifies the lost digits (docs/hard-cases.md). An
       // unnormalised N (the unnormalised_normal counterfactual) keeps the literal form.
       const glm::dvec3 sum = to_light + to_eye;
+      report.direction("L+V", sum);
       double exponent;  // tan²(gamma) / sigma²
       if (shading::normal_length(normal) == 1.0) {
-        const double tan_over_sigma = stable::length(glm::cross(normal, sum)) / glm::dot(normal, sum) / roughness_;
+        if (report) {
+          const glm::dvec3 half = shading::half_vector(to_light, to_eye);
+          report.direction("H", half);
+          report.scalar("N·H", glm::dot(normal, half));
+        }
+        const double tan_gamma = stable::length(glm::cross(normal, sum)) / glm::dot(normal, sum);
+        report.scalar("tan γ", tan_gamma);
+        if (report) report.scalar("tan²γ", tan_gamma * tan_gamma);
+        const double tan_over_sigma = tan_gamma / roughness_;
         exponent = tan_over_sigma * tan_over_sigma;
       } else {
-        const double n_dot_h = glm::dot(normal, shading::half_vector(to_light, to_eye));
-        exponent = (1.0 - n_dot_h * n_dot_h) / (n_dot_h * n_dot_h) / roughness_squared_;
+        const glm::dvec3 half = shading::half_vector(to_light, to_eye);
+        report.direction("H", half);
+        const double n_dot_h = glm::dot(normal, half);
+        report.scalar("N·H", n_dot_h);
+        const double tan_squared = (1.0 - n_dot_h * n_dot_h) / (n_dot_h * n_dot_h);
+        report.scalar("tan²γ", tan_squared);
+        exponent = tan_squared / roughness_squared_;
       }
-      spec = specular_ * (std::exp(-exponent) * normalisation_ * shading::inverse_sqrt_product(n_dot_l, n_dot_v));
+      report.scalar("tan²γ/σ²", exponent);
+      const double lobe = std::exp(-exponent);
+      report.scalar("exp(−tan²γ/σ²)", lobe);
+      const double inverse_sqrt = shading::inverse_sqrt_product(n_dot_l, n_dot_v);
+      report.scalar("1/sqrt((N·L)(N·V))", inverse_sqrt);
+      spec = specular_ * (lobe * normalisation_ * inverse_sqrt);
     }
-    return (diffuse_ + spec) * sat(n_dot_l);
+    report.colour("specular", spec);
+    const glm::dvec3 sum = diffuse_ + spec;
+    report.colour("diffuse + specular", sum);
+    return sum * sat(n_dot_l);
   }
 
- private:
   glm::dvec3 diffuse_;
   glm::dvec3 specular_;
   double roughness_;

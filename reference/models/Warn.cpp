@@ -14,22 +14,37 @@ namespace {
 
 using shading::sat;
 
-class Warn final : public LightingModel {
+class Warn final : public EvaluatedModel {
  public:
   Warn(const glm::dvec3& diffuse, const glm::dvec3& light_color, double exponent)
       : diffuse_(diffuse), light_color_(light_color), exponent_(exponent) {}
 
-  glm::dvec3 shade(const SurfacePoint& point, const ObjectSpaceLighting& lighting) const override {
+ private:
+  glm::dvec3 evaluate(const SurfacePoint& point, const ObjectSpaceLighting& lighting, Report report) const override {
     const shading::PointLight light = shading::point_light(point, lighting);
-    const double cone = std::pow(sat(glm::dot(light.direction, lighting.light_direction)), exponent_);
+    shading::report_point_light(report, point, lighting, light);
+    report.direction("L", lighting.light_direction);
+    const double cos_theta = glm::dot(light.direction, lighting.light_direction);
+    report.scalar("Lp·L", cos_theta);
+    report.scalar("sat(Lp·L)", sat(cos_theta));
+    const double cone = std::pow(sat(cos_theta), exponent_);
+    report.scalar("sat(Lp·L)^warn_exponent", cone);
+    const double n_dot_l = glm::dot(point.normal, light.direction);
+    report.scalar("N·Lp", n_dot_l);
+    report.scalar("sat(N·Lp)", sat(n_dot_l));
     // Times 1/d twice: d² under- or overflows for d < ~1e-154 or > ~1e154, where the
     // colour itself is still a finite double.
     const double inverse_distance = 1.0 / light.distance;
-    return diffuse_ * light_color_ *
-           (cone * sat(glm::dot(point.normal, light.direction)) * inverse_distance * inverse_distance);
+    report.scalar("1/d", inverse_distance);
+    if (report) report.scalar("1/d²", inverse_distance * inverse_distance);
+    const double lit = cone * sat(n_dot_l);
+    report.scalar("sat(Lp·L)^warn_exponent sat(N·Lp)", lit);
+    const double factor = lit * inverse_distance * inverse_distance;
+    report.scalar("sat(Lp·L)^warn_exponent sat(N·Lp)/d²", factor);
+    if (report) report.colour("diffuse light_color", diffuse_ * light_color_);
+    return diffuse_ * light_color_ * factor;
   }
 
- private:
   glm::dvec3 diffuse_;
   glm::dvec3 light_color_;
   double exponent_;
