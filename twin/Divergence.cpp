@@ -230,7 +230,7 @@ std::vector<int> match_values(const ProgramTrace& port, std::span<const Counterp
 }
 
 Divergence localise_divergence(const ProgramTrace& port, std::span<const Counterpart> counterparts,
-                               const std::string& against) {
+                               const std::string& against, bool trust_uniforms) {
   const Module& m = *port.module;
   const DataFlow flow = data_flow(m);
   const ValueNames names(m);
@@ -244,11 +244,23 @@ Divergence localise_divergence(const ProgramTrace& port, std::span<const Counter
   std::vector<uint8_t> departs(count, 0);
   std::vector<size_t> order(count, SIZE_MAX);
   std::vector<int> first_value(count, -1);
+  // With trust_uniforms, what is computed from uniforms and constants alone (a parameter
+  // squared) is trusted as the uniforms are. Two passes: the module lists a value's inputs
+  // before it except through loops.
+  std::vector<uint8_t> trusted(count, 0);
+  for (int pass = 0; pass < 2 && trust_uniforms; ++pass)
+    for (size_t i = 0; i < count; ++i) {
+      const auto variable = flow.read_variable[i];
+      if (flow.kind[i] == Kind::read)
+        trusted[i] = !variable || spv::StorageClass(m.types[m.type_of[variable]].storage) != spv::StorageClass::Input;
+      else if (flow.kind[i] == Kind::computed)
+        trusted[i] = std::ranges::all_of(flow.inputs[i], [&](uint32_t j) { return trusted[j] != 0; });
+    }
   for (size_t i = 0; i < port.values.size(); ++i) {
     const uint32_t in = port.values[i].instruction;
     // A value computed from constants alone (glslang builds vec3(0.0) at run time) is one.
     const bool from_constants = flow.kind[in] == Kind::computed && flow.inputs[in].empty();
-    if (match[i] == -1 && !from_constants) departs[in] = 1;
+    if (match[i] == -1 && !from_constants && !trusted[in]) departs[in] = 1;
     order[in] = std::min(order[in], i);
     if (first_value[in] < 0) first_value[in] = int(i);
   }

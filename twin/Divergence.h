@@ -67,8 +67,10 @@ struct Divergence {
 };
 
 // `port`: the port's trace (either stage); `counterparts` at the same pixels or vertices.
+// `trust_uniforms`: what the stage reads from uniforms never departs (a model shows its
+// quantities, not every value a shader is given).
 Divergence localise_divergence(const ProgramTrace& port, std::span<const Counterpart> counterparts,
-                               const std::string& against = "the original");
+                               const std::string& against = "the original", bool trust_uniforms = false);
 
 // The line of a vertex stage that writes the varying at `location` (its last store).
 std::optional<SourceLine> varying_writer(const Module& vertex, int location);

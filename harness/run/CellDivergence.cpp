@@ -89,17 +89,25 @@ Result<void> CellDivergence::draw_twins(GroupDrawer& drawer, const CellGroup& gr
 }
 
 CellResult::Divergence CellDivergence::locate(GroupDrawer& drawer, const CellGroup& group, const PlannedCell& cell,
-                                              const CellResult& row, std::span<const twin::PixelAt> pixels) {
+                                              const CellResult& row, std::span<const twin::PixelAt> pixels,
+                                              std::span<const twin::Counterpart> model) {
   const auto key = std::pair{group.variant, cell.language};
   if (auto it = found_.find(key); it != found_.end()) return it->second;
   CellResult::Divergence& result = found_[key];
-  if (!group.reference_cell || !group.reference_variant) return result = error_result("the case names no original");
+  const bool differential = group.reference_cell && group.reference_variant;
+  if (!differential && model.empty()) return result = error_result("the reference shows no values to match against");
   if (pixels.empty()) return result = error_result("no interior pixel to trace");
   if (auto drawn = draw_twins(drawer, group, cell, row); !drawn) return result = error_result(drawn.error().message);
   const auto port_input = port_->last_input();
-  const auto original_input = original_->last_input();
   auto port_trace = twin::trace_program(*port_input, pixels);
-  if (!port_trace) return result = error_result("the port's twin could not trace it: " + port_trace.error().to_string());
+  if (!port_trace) return result = error_result("the shader's twin could not trace it: " + port_trace.error().to_string());
+  if (!differential) {
+    twin::Divergence found = twin::localise_divergence(*port_trace, model, "the model", true);
+    if (found.varying_location >= 0)   // no vertex values to match: the line that writes it
+      if (auto vertex = twin::trace_vertex_program(*port_input, 1)) found = twin::into_vertex_stage(found, *vertex, {});
+    return result = divergence_result(found);
+  }
+  const auto original_input = original_->last_input();
   auto original_trace = twin::trace_program(*original_input, pixels);
   if (!original_trace)
     return result = error_result("the original's twin could not trace it: " + original_trace.error().to_string());
@@ -115,7 +123,8 @@ CellResult::Divergence CellDivergence::locate(GroupDrawer& drawer, const CellGro
 
 Result<PixelExplanation> CellDivergence::explain(GroupDrawer& drawer, const CellGroup& group, const PlannedCell& cell,
                                                  const CellResult& row, int x, int y,
-                                                 std::span<const twin::PixelAt> context) {
+                                                 std::span<const twin::PixelAt> context,
+                                                 std::span<const twin::Counterpart> model) {
   if (auto drawn = draw_twins(drawer, group, cell, row); !drawn) return std::unexpected(drawn.error());
   const bool differential = group.reference_cell && group.reference_variant;
   std::vector<twin::PixelAt> pixels{{x, y}};
@@ -133,6 +142,9 @@ Result<PixelExplanation> CellDivergence::explain(GroupDrawer& drawer, const Cell
       return fail(ErrorStage::twin, "the original's twin could not trace it: " + original_trace.error().to_string());
     counterparts = twin::counterparts_of(*original_trace);
     out.against = "the original";
+  } else if (!model.empty() && pixels.size() == context.size()) {   // (x, y) is context[0]: the model's order
+    counterparts.assign(model.begin(), model.end());
+    out.against = "the model";
   }
   out.lines = twin::pixel_listing(*port_trace, 0, counterparts);
   return out;

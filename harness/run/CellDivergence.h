@@ -28,7 +28,7 @@ std::vector<twin::PixelAt> divergence_pixels(const Image& render, const Referenc
 // explain --pixel` prints and the viewer's inspector shows.
 struct PixelExplanation {
   int x = 0, y = 0;
-  std::string against;                   // "the original" (values matched), or "" (none)
+  std::string against;                   // "the original", "the model" (values matched), or "" (none)
   std::vector<twin::ListedLine> lines;   // the fragment stage's, at the pixel
 };
 
@@ -36,13 +36,18 @@ class CellDivergence {
  public:
   CellDivergence();
   void begin_group() { found_.clear(); }
-  // Failing cell `row` of a differential group, at `pixels`.
+  // Failing cell `row` at `pixels`: against the group's original when it has one, else
+  // against `model`, the reference's named quantities at the same pixels
+  // (CellReference::quantities); an error when there is neither.
   CellResult::Divergence locate(GroupDrawer& drawer, const CellGroup& group, const PlannedCell& cell,
-                                const CellResult& row, std::span<const twin::PixelAt> pixels);
+                                const CellResult& row, std::span<const twin::PixelAt> pixels,
+                                std::span<const twin::Counterpart> model = {});
   // Pixel (x, y) of cell `row`'s shader, by its double twin, with the original's matches
-  // when the group has one (matched over `context` pixels as well as this one).
+  // when the group has one, else the model's (`model` at `context`, x and y first: pixel
+  // (x, y) must be context[0] then), matched over `context` as well as this pixel.
   Result<PixelExplanation> explain(GroupDrawer& drawer, const CellGroup& group, const PlannedCell& cell,
-                                   const CellResult& row, int x, int y, std::span<const twin::PixelAt> context);
+                                   const CellResult& row, int x, int y, std::span<const twin::PixelAt> context,
+                                   std::span<const twin::Counterpart> model = {});
 
  private:
   // Both twins drawn for `cell` (the original's only when the group has one); the error

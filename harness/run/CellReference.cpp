@@ -14,6 +14,8 @@ std::vector<Redrawn> CellReference::counterfactuals(GroupDrawer&) const { return
 
 std::optional<TexelStepBound> CellReference::texel_bound(GroupDrawer&) const { return std::nullopt; }
 
+std::vector<twin::Counterpart> CellReference::quantities(std::span<const twin::PixelAt>) const { return {}; }
+
 Result<const DrawAdditions*> ReferenceKind::draw_inputs(const GroupScene&) { return nullptr; }
 
 }  // namespace shaderbed

@@ -19,6 +19,7 @@
 #include "run/TexelStepBound.h"
 #include "scene/CaseFile.h"
 #include "scene/Scene.h"
+#include "twin/Divergence.h"
 
 namespace shaderbed {
 
@@ -89,6 +90,10 @@ class CellReference {
   // render that samples them as the cells do (run/TexelStepBound.h); asked once per group
   // before its cells are judged. Nothing: no such texture, or a reference that reads none.
   virtual std::optional<TexelStepBound> texel_bound(GroupDrawer& drawer) const;
+  // The reference's own named values at `pixels` on the way to its image (a model's N·L, D,
+  // F, ...), which the divergence search matches a shader's values against
+  // (run/CellDivergence.h); empty when it has none to show.
+  virtual std::vector<twin::Counterpart> quantities(std::span<const twin::PixelAt> pixels) const;
   // Whether a cell's note on the image files it reads applies (CaseTextures::reference_note):
   // a model reads no texture.
   virtual bool notes_textures() const = 0;

@@ -273,10 +273,14 @@ struct GroupRunner::Impl final : GroupDrawer {
       if (r.status != CellStatus::fail) continue;
       if (group_image) {
         explain_cell(images[i], *group_image, classes_, evidence, r);
-        // A port against its original: where it departs, from both twins.
-        if (c.reference_render && !r.reference.is_reference)
-          r.divergence = divergences_.locate(*this, g, g.cells[rendered[i]], r,
-                                             divergence_pixels(images[i], *group_image, classes_));
+        // Where the shader departs from its original, or from the model's quantities.
+        if (!r.reference.is_reference) {
+          const std::vector<twin::PixelAt> pixels = divergence_pixels(images[i], *group_image, classes_);
+          const std::vector<twin::Counterpart> model = c.reference_render ? std::vector<twin::Counterpart>{}
+                                                                          : reference.quantities(pixels);
+          if (c.reference_render || !model.empty())
+            r.divergence = divergences_.locate(*this, g, g.cells[rendered[i]], r, pixels, model);
+        }
       } else {
         const ReferenceImage& own = own_references.at(rendered[i]);
         explain_cell(images[i], own, classify_pixels(own), evidence, r);
@@ -541,7 +545,11 @@ struct GroupRunner::Impl final : GroupDrawer {
       explanation_ = fail(ErrorStage::twin, "no pixel of the shape to explain: name one with --pixel X,Y");
       return;
     }
-    explanation_ = divergences_.explain(*this, g, cell, r, pixel->x, pixel->y, context);
+    // The model's quantities in the order explain() traces: this pixel first.
+    std::erase_if(context, [&](const twin::PixelAt& p) { return p.x == pixel->x && p.y == pixel->y; });
+    context.insert(context.begin(), *pixel);
+    const std::vector<twin::Counterpart> model = reference ? reference->quantities(context) : std::vector<twin::Counterpart>{};
+    explanation_ = divergences_.explain(*this, g, cell, r, pixel->x, pixel->y, context, model);
   }
 };
 

@@ -1,5 +1,8 @@
 #include "run/ReferenceKinds.h"
 
+#include <map>
+
+#include "reference/ModelQuantities.h"
 #include "reference/Reference.h"
 #include "run/ReferenceRender.h"
 
@@ -36,6 +39,38 @@ class ModelReference final : public CellReference {
       out.push_back({redraw({.faceted_normal = true}), "faceted_normal",
                      "the flat facet normal instead of the interpolated one (a normal from screen-space "
                      "derivatives, cross(ddx(P), ddy(P)))"});
+    }
+    return out;
+  }
+
+  // The model's named quantities per pixel (reference/ModelQuantities.h), one counterpart
+  // each; per-vertex shading interpolates colours only, so it has none but its own.
+  std::vector<twin::Counterpart> quantities(std::span<const twin::PixelAt> pixels) const override {
+    if (mode_ != LightingMode::per_pixel) return {};
+    std::vector<std::pair<int, int>> at;
+    for (const twin::PixelAt& p : pixels) at.emplace_back(p.x, p.y);
+    const Case& c = *g_.group.c;
+    auto values = reference::model_quantities(reference_scene(g_.mesh, g_.scene, c), c.model, c.params, at);
+    if (!values) return {};
+    std::vector<twin::Counterpart> out;
+    std::map<std::string, size_t> index;
+    for (size_t p = 0; p < values->size(); ++p)
+      for (const reference::NamedQuantity& q : (*values)[p]) {
+        auto [it, added] = index.try_emplace(q.name, out.size());
+        const auto slots = uint32_t(q.values.size());
+        if (added)
+          out.push_back({"", 0, q.name, slots, std::vector<double>(pixels.size() * slots, 0.0),
+                         std::vector<uint8_t>(pixels.size(), 0), true});
+        twin::Counterpart& cp = out[it->second];
+        if (cp.slots != slots) continue;
+        std::copy(q.values.begin(), q.values.end(), cp.values.begin() + std::ptrdiff_t(p * slots));
+        cp.present[p] = 1;
+      }
+    // The case's parameters, which the shader reads from its uniforms.
+    for (const auto& [name, value] : c.params) {
+      twin::Counterpart cp{"", 0, name, uint32_t(value.size()), {}, std::vector<uint8_t>(pixels.size(), 1), true};
+      for (size_t p = 0; p < pixels.size(); ++p) cp.values.insert(cp.values.end(), value.begin(), value.end());
+      out.push_back(std::move(cp));
     }
     return out;
   }

@@ -5,8 +5,6 @@
 #include "reference/Surface.h"
 
 namespace shaderbed {
-namespace {
-
 reference::Scene reference_scene(const Mesh& mesh, const SceneSetup& s, const Case& c) {
   reference::Scene scene;
   scene.mesh.indices = mesh.indices;
@@ -27,7 +25,6 @@ reference::Scene reference_scene(const Mesh& mesh, const SceneSetup& s, const Ca
   return scene;
 }
 
-}  // namespace
 
 Result<ReferenceImage> render_reference(const Mesh& mesh, const SceneSetup& s, const Case& c, LightingMode mode) {
   return render_reference(mesh, s, c, mode, reference::Perturbation{});

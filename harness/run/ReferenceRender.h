@@ -25,6 +25,10 @@ Result<ReferenceImage> render_reference(const Mesh& mesh, const SceneSetup& scen
 Result<ReferenceImage> render_reference(const Mesh& mesh, const SceneSetup& scene, const Case& c, LightingMode mode,
                                         const reference::Perturbation& perturbation);
 
+// The reference's scene for the case: the mesh, camera, world matrix, lights and ambient
+// the cells are drawn with.
+reference::Scene reference_scene(const Mesh& mesh, const SceneSetup& scene, const Case& c);
+
 // The reference's scene for the case's visible surface: its light is the one the model
 // shades with (the point light for the point- and spot-light models, else the case's).
 reference::Scene surface_scene(const Mesh& mesh, const SceneSetup& scene, const Case& c);
