@@ -50,15 +50,47 @@ std::span<const uint32_t> value_operands(const Module& m, const Instruction& in)
 }
 
 ValueNames::ValueNames(const Module& m) : m_(m) {
-  for (const Instruction& i : m.instructions)
-    if (spv::Op(i.op) == spv::Op::OpLoad && i.operand_count > 0) loaded_from_[i.result] = m.operands_of(i)[0];
+  for (const Instruction& i : m.instructions) {
+    const spv::Op op = spv::Op(i.op);
+    if (op == spv::Op::OpLoad && i.operand_count > 0) loaded_from_[i.result] = m.operands_of(i)[0];
+    if ((op == spv::Op::OpAccessChain || op == spv::Op::OpInBoundsAccessChain) && i.operand_count > 0) chains_[i.result] = &i;
+    if (op == spv::Op::OpStore && i.operand_count > 1 && m.names.contains(m.operands_of(i)[0]))
+      stored_into_.try_emplace(m.operands_of(i)[1], m.operands_of(i)[0]);
+  }
+}
+
+// A variable's name, or a member's through an access chain with constant indices: the
+// variable's name and the members' ("input.Normal"); an anonymous block's members alone.
+std::string ValueNames::pointer_name(uint32_t pointer) const {
+  if (auto named = m_.names.find(pointer); named != m_.names.end()) return named->second;
+  auto chain = chains_.find(pointer);
+  if (chain == chains_.end()) return "";
+  const auto ops = m_.operands_of(*chain->second);
+  std::string name = pointer_name(ops[0]);
+  uint32_t type = m_.types[m_.type_of[ops[0]]].element;   // the pointee
+  for (size_t k = 1; k < ops.size(); ++k) {
+    const Type& t = m_.types[type];
+    const bool constant = ops[k] < m_.bound && m_.is_constant[ops[k]] && !m_.constants[ops[k]].empty();
+    if (t.kind != Type::Kind::structure || !constant) {
+      if (name.empty()) return "";
+      name += constant ? "[" + std::to_string(int64_t(m_.constants[ops[k]][0])) + "]" : "[...]";
+      type = t.element;
+      continue;
+    }
+    const auto member = uint32_t(m_.constants[ops[k]][0]);
+    auto member_name = m_.member_names.find({type, member});
+    if (member_name == m_.member_names.end() || member >= t.members.size()) return "";
+    name = name.empty() ? member_name->second : name + "." + member_name->second;
+    type = t.members[member];
+  }
+  return name;
 }
 
 std::string ValueNames::operator()(uint32_t id) const {
   if (auto it = m_.names.find(id); it != m_.names.end()) return it->second;
-  // An unnamed temporary loaded from a named variable goes by the variable's name.
   if (auto it = loaded_from_.find(id); it != loaded_from_.end())
-    if (auto named = m_.names.find(it->second); named != m_.names.end()) return named->second;
+    if (std::string name = pointer_name(it->second); !name.empty()) return name;
+  if (auto it = stored_into_.find(id); it != stored_into_.end()) return m_.names.at(it->second);
   return m_.name_of(id);
 }
 

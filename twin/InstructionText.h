@@ -26,15 +26,20 @@ std::span<const uint32_t> value_operands(const Module& m, const Instruction& in)
 // The source line an instruction carries ({"", 0} when none).
 const SourceLine& line_of(const Module& m, const Instruction& in);
 
-// Names of values: OpName, else the name of the variable an unnamed OpLoad read, else %id.
+// Names of values: OpName; else what an unnamed load read (a variable, or a member of one
+// through an access chain: "input.Normal", "Base"); else the named variable the value is
+// stored into; else %id.
 class ValueNames {
  public:
   explicit ValueNames(const Module& m);
   std::string operator()(uint32_t id) const;
 
  private:
+  std::string pointer_name(uint32_t pointer) const;
   const Module& m_;
   std::map<uint32_t, uint32_t> loaded_from_;
+  std::map<uint32_t, const Instruction*> chains_;   // access chain result -> its instruction
+  std::map<uint32_t, uint32_t> stored_into_;        // value -> the first variable it is stored into
 };
 
 }  // namespace twin

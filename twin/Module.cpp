@@ -106,6 +106,7 @@ class Decoder {
           if (last_source_file_) sources_[last_source_file_] += literal_string(w);
           continue;
         case Op::OpName: m_.names[w[0]] = literal_string(w.subspan(1)); continue;
+        case Op::OpMemberName: m_.member_names[{w[0], w[1]}] = literal_string(w.subspan(2)); continue;
         case Op::OpLine: {
           m_.lines.push_back({strings.count(w[0]) ? strings[w[0]] : "", int(w[1])});
           current_line = uint32_t(m_.lines.size() - 1);

@@ -102,6 +102,7 @@ struct Module {
   std::vector<uint8_t> glsl_std450;    // by id: the id is the GLSL.std.450 import
   std::vector<uint8_t> non_semantic;   // by id: an import whose instructions do nothing
   std::map<uint32_t, std::string> names;   // OpName
+  std::map<std::pair<uint32_t, uint32_t>, std::string> member_names;   // (struct type, member) -> OpMemberName
   std::map<std::string, std::string> sources;   // file -> source text (OpSource), when present
 
   std::span<const uint32_t> operands_of(const Instruction& i) const {

@@ -45,7 +45,8 @@ int main(int argc, char** argv) {
                                           shaderbed::add_stats_command(app), shaderbed::add_sweep_command(app),
                                           shaderbed::add_hard_command(app),
                                           shaderbed::add_init_command(app),
-                                          shaderbed::add_port_command(app), shaderbed::add_cell_worker_command(app),
+                                          shaderbed::add_port_command(app), shaderbed::add_explain_command(app),
+                                          shaderbed::add_cell_worker_command(app),
                                           shaderbed::add_bench_command(app), shaderbed::add_devices_command(app),
                                           shaderbed::add_view_command(app), shaderbed::add_view_compile_command(app),
                                           shaderbed::add_sh_command(app)};
