@@ -81,6 +81,7 @@ EntryText failure_text(const CellResult& r) {
     t.details.push_back("no convention explains it; closest: " + r.explanations.front().summary);
   else if (const std::string withheld = withheld_explanation(r); !withheld.empty())
     t.details.push_back("no convention offered: " + withheld);
+  if (const auto& d = r.divergence) t.details.push_back("departs: " + (d->kind == "error" ? "not localised: " + d->error : d->text));
   if (const std::string against = judged_against(r); !against.empty()) t.details.push_back("judged against: " + against);
   if (!r.reference_note.empty()) t.details.push_back("reference: " + r.reference_note);
   for (std::string& line : twin_lines(r)) t.details.push_back(std::move(line));

@@ -98,6 +98,9 @@ ojson cell_json(const CellResult& r) {
                             {"line", d->line}, {"source", d->source}, {"operation", d->operation},
                             {"value", d->value}, {"operands", std::move(operands)}, {"text", d->text},
                             {"pixels", d->pixels}};
+      for (const auto& [key, e] : {std::pair{"port_source", &d->port_source}, std::pair{"original_source", &d->original_source}})
+        if (!e->lines.empty())
+          cell["divergence"][key] = {{"file", e->file}, {"first", e->first}, {"mark", e->mark}, {"lines", e->lines}};
       if (!d->nearest_file.empty() || !d->nearest_value.empty())
         cell["divergence"]["nearest"] = {{"file", d->nearest_file}, {"line", d->nearest_line},
                                          {"value", d->nearest_value}, {"relation", d->nearest_relation}};
@@ -362,6 +365,16 @@ CellResult read_cell(const json& c, const std::string& p) {
           read(o, "name", op, operand.name);
           read(o, "matches", op, operand.matches);
           x.operands.push_back(std::move(operand));
+        }
+      for (const auto& [key, e] : {std::pair{"port_source", &x.port_source}, std::pair{"original_source", &x.original_source}})
+        if (const json* o = object_at(*d, key, dp)) {
+          const std::string op = child(dp, key);
+          read(*o, "file", op, e->file);
+          read(*o, "first", op, e->first);
+          read(*o, "mark", op, e->mark);
+          if (const json* lines = member(*o, "lines"); lines && lines->is_array())
+            for (const json& l : *lines)
+              if (l.is_string()) e->lines.push_back(l.get<std::string>());
         }
       if (const json* n = object_at(*d, "nearest", dp)) {
         const std::string np = child(dp, "nearest");

@@ -186,6 +186,14 @@ struct CellResult {
     int nearest_line = 0;
     std::string text;                 // the one line the console prints
     int pixels = 0;
+    // The lines around it in the shader, and around the original's nearest value (or the
+    // first operand's match), for a report to show side by side; `mark` is highlighted.
+    struct Excerpt {
+      std::string file;
+      int first = 0, mark = 0;        // line numbers
+      std::vector<std::string> lines;
+    };
+    Excerpt port_source, original_source;
     std::string error;                // kind "error": why it could not be localised
   };
   std::optional<Divergence> divergence;

@@ -1,7 +1,10 @@
 #include "run/CellDivergence.h"
 
+#include "twin/ValueOrigin.h"
+
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 namespace shaderbed {
 namespace {
@@ -50,6 +53,39 @@ CellDivergence::CellDivergence() : port_slot_{"twin-double"}, original_slot_{"tw
   port_slot_.backend = double_twin(port_);
   original_slot_.backend = double_twin(original_);
 }
+
+namespace {
+
+// Lines line - 6 .. line + 6 of `file` as `module` carries it (or the file on disk).
+CellResult::Divergence::Excerpt excerpt(const twin::Module& module, const std::string& file, int line) {
+  CellResult::Divergence::Excerpt e{file, std::max(1, line - 6), line, {}};
+  for (int l = e.first; l <= line + 6; ++l) {
+    std::string text = twin::source_line_text(module, file, l);
+    if (text.empty() && l > line) break;
+    e.lines.push_back(std::move(text));
+  }
+  return e;
+}
+
+// The excerpts of a divergence found in `port` against `original` (null: a model).
+void add_excerpts(CellResult::Divergence& r, const twin::Module& port, const twin::Module* original) {
+  if (r.kind != "found" || r.file.empty()) return;
+  r.port_source = excerpt(port, r.file, r.line);
+  if (!original) return;
+  std::string file = r.nearest_file;
+  int line = r.nearest_line;
+  for (const auto& o : r.operands)   // else where the first operand's counterpart is
+    if (file.empty() && !o.matches.empty() && o.matches != "constant") {
+      const std::string where = o.matches.substr(0, o.matches.find(' '));
+      const size_t colon = where.rfind(':');
+      if (colon == std::string::npos) continue;
+      file = where.substr(0, colon);
+      line = std::atoi(where.c_str() + colon + 1);
+    }
+  if (!file.empty()) r.original_source = excerpt(*original, file, line);
+}
+
+}  // namespace
 
 CellResult::Divergence divergence_result(const twin::Divergence& d) {
   CellResult::Divergence r;
@@ -105,7 +141,9 @@ CellResult::Divergence CellDivergence::locate(GroupDrawer& drawer, const CellGro
     twin::Divergence found = twin::localise_divergence(*port_trace, model, "the model", true);
     if (found.varying_location >= 0)   // no vertex values to match: the line that writes it
       if (auto vertex = twin::trace_vertex_program(*port_input, 1)) found = twin::into_vertex_stage(found, *vertex, {});
-    return result = divergence_result(found);
+    result = divergence_result(found);
+    add_excerpts(result, found.stage == "vertex" ? *port_input->program.vertex : *port_input->program.fragment, nullptr);
+    return result;
   }
   const auto original_input = original_->last_input();
   auto original_trace = twin::trace_program(*original_input, pixels);
@@ -118,7 +156,11 @@ CellResult::Divergence CellDivergence::locate(GroupDrawer& drawer, const CellGro
     if (port_vertex && original_vertex)
       found = twin::into_vertex_stage(found, *port_vertex, twin::counterparts_of(*original_vertex));
   }
-  return result = divergence_result(found);
+  result = divergence_result(found);
+  const bool vertex = found.stage == "vertex";
+  add_excerpts(result, vertex ? *port_input->program.vertex : *port_input->program.fragment,
+               vertex ? original_input->program.vertex.get() : original_input->program.fragment.get());
+  return result;
 }
 
 Result<PixelExplanation> CellDivergence::explain(GroupDrawer& drawer, const CellGroup& group, const PlannedCell& cell,
