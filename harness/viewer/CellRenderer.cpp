@@ -131,7 +131,38 @@ Result<CellRenderer::Drawn> CellRenderer::draw_program(const Case& c, const Vari
   return Drawn{std::move(drawn->image), drawn->timings.draw_ms + drawn->timings.readback_ms};
 }
 
-Frame CellRenderer::draw(const FrameRequest& request) {
+Frame CellRenderer::draw(const FrameRequest& request) { return draw_frame(request, nullptr); }
+
+Inspection CellRenderer::inspect(const InspectRequest& request) {
+  const auto t0 = Clock::now();
+  Inspection out{.state = request.frame.state, .x = request.x, .y = request.y};
+  if (request.x < 0 || request.y < 0 || request.x >= request.frame.size || request.y >= request.frame.size) {
+    out.note = fmt::format("pixel ({}, {}) is outside the {}x{} image", request.x, request.y, request.frame.size,
+                           request.frame.size);
+    return out;
+  }
+  const Frame frame = draw_frame(request.frame, &out);
+  if (!out.explanation && out.note.empty()) out.note = frame.problem ? frame.problem->to_string() : "nothing was traced";
+  out.ms = ms_since(t0);
+  return out;
+}
+
+void CellRenderer::explain_pixel(GroupDrawer& drawer, const CellGroup& group, const CellReference& reference,
+                                 const Frame& frame, Inspection& out) {
+  if (!twins_) twins_ = std::make_unique<CellDivergence>();
+  // The original's values are matched over a spread of pixels besides this one, as `run`
+  // locates a divergence (a value is named by what it matches everywhere, not by chance).
+  std::vector<twin::PixelAt> context;
+  if (frame.render && frame.reference)
+    context = divergence_pixels(*frame.render, *frame.reference, classify_pixels(*frame.reference));
+  const PlannedCell& cell = group.cells.front();
+  const CellResult row = drawer.row(cell, reference.source());
+  auto explained = twins_->explain(drawer, group, cell, row, out.x, out.y, context);
+  if (explained) out.explanation = std::move(*explained);
+  else out.note = explained.error().message;
+}
+
+Frame CellRenderer::draw_frame(const FrameRequest& request, Inspection* inspection) {
   const auto t0 = Clock::now();
   Frame frame;
   frame.generation = request.generation;
@@ -240,6 +271,7 @@ Frame CellRenderer::draw(const FrameRequest& request) {
     frame.reference_problem = "the case's reference is " + reference->source().label +
                               ": the viewer draws only model and original references";
   }
+  if (inspection) explain_pixel(drawer, group, *reference, frame, *inspection);
 
   if (!frame.reference) {
     frame.verdict = "not judged";

@@ -18,6 +18,7 @@
 
 #include "backends/Backend.h"
 #include "compare/ImageComparison.h"
+#include "run/CellDivergence.h"
 #include "run/CellPlan.h"
 #include "run/ProgramCache.h"
 #include "run/ReferenceKinds.h"
@@ -52,6 +53,23 @@ struct Frame {
   double frame_ms = 0;                      // all of it: compile when needed, draw, reference, compare
 };
 
+// The inspector's question (`i` or a right click): pixel (x, y) of the image `frame` draws,
+// in image space (the run's: row 0 at the top).
+struct InspectRequest {
+  FrameRequest frame;
+  int x = 0, y = 0;
+};
+
+// Its answer: the cell's shader at that pixel, line by line, by its double twin
+// (run/CellDivergence.h), matched to the original's values for a differential case.
+struct Inspection {
+  ViewerState state;                            // the cell asked about
+  int x = 0, y = 0;
+  std::optional<PixelExplanation> explanation;  // none: see `note`
+  std::string note;                             // why not: outside the shape, a draw error
+  double ms = 0;                                // all of it: the frame again, both twins, the traces
+};
+
 class CellRenderer {
  public:
   // `probe_binary`: the shaderbed executable, which compiles each program in a child
@@ -62,6 +80,9 @@ class CellRenderer {
   CellRenderer& operator=(const CellRenderer&) = delete;
 
   Frame draw(const FrameRequest& request);
+  // Draws the request's frame again and then its pixel by the twins; asked only by the
+  // inspector, so a frame costs nothing more for it.
+  Inspection inspect(const InspectRequest& request);
 
  private:
   struct Drawn {
@@ -69,6 +90,11 @@ class CellRenderer {
     double draw_ms = 0;
   };
   class Drawer;
+  // draw(), and with `inspection`, its pixel explained into it once the frame's cell and
+  // reference are known.
+  Frame draw_frame(const FrameRequest& request, Inspection* inspection);
+  void explain_pixel(GroupDrawer& drawer, const CellGroup& group, const CellReference& reference, const Frame& frame,
+                     Inspection& out);
   // `additions`: what the case's reference adds to its draws (run/CellDraw.h); may be null.
   Result<Drawn> draw_program(const Case& c, const Variant& variant, Language language, BackendSlot& slot,
                              ShaderPath path, const Mesh& mesh, const SceneSetup& scene, bool wireframe,
@@ -84,6 +110,7 @@ class CellRenderer {
   std::map<std::string, Result<Texture>> luts_;            // variant and parameters
   StoredReferences no_stored_;                             // the viewer loads no stored run
   std::unique_ptr<ReferenceKinds> references_;             // made anew when the sources change
+  std::unique_ptr<CellDivergence> twins_;                  // the inspector's, made on its first use
 };
 
 }  // namespace shaderbed::viewer

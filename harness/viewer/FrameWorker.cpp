@@ -28,22 +28,40 @@ std::optional<Frame> FrameWorker::take() {
   return std::exchange(finished_, std::nullopt);
 }
 
+void FrameWorker::inspect(InspectRequest request) {
+  {
+    const std::lock_guard lock(mutex_);
+    pending_inspection_ = std::move(request);
+  }
+  wake_.notify_all();
+}
+
+std::optional<Inspection> FrameWorker::take_inspection() {
+  const std::lock_guard lock(mutex_);
+  return std::exchange(inspected_, std::nullopt);
+}
+
 void FrameWorker::loop() {
   // Made here, so the backends start (and their contexts are current) on this thread.
   CellRenderer renderer(probe_binary_);
   for (;;) {
-    FrameRequest request;
+    std::optional<FrameRequest> request;
+    std::optional<InspectRequest> inspection;
     {
       std::unique_lock lock(mutex_);
-      wake_.wait(lock, [&] { return stopping_ || pending_; });
+      wake_.wait(lock, [&] { return stopping_ || pending_ || pending_inspection_; });
       if (stopping_) return;
-      request = std::move(*pending_);
-      pending_.reset();
+      if (pending_) request = std::exchange(pending_, std::nullopt);
+      else inspection = std::exchange(pending_inspection_, std::nullopt);
     }
-    Frame frame = renderer.draw(request);
-    {
+    if (request) {
+      Frame frame = renderer.draw(*request);
       const std::lock_guard lock(mutex_);
       finished_ = std::move(frame);
+    } else {
+      Inspection inspected = renderer.inspect(*inspection);
+      const std::lock_guard lock(mutex_);
+      inspected_ = std::move(inspected);
     }
     if (on_frame_) on_frame_();
   }

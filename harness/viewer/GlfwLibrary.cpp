@@ -45,6 +45,7 @@ Result<const GlfwLibrary*> glfw_library() {
     symbol(library.set_char_callback, "glfwSetCharCallback");
     symbol(library.set_mouse_button_callback, "glfwSetMouseButtonCallback");
     symbol(library.set_cursor_pos_callback, "glfwSetCursorPosCallback");
+    symbol(library.get_cursor_pos, "glfwGetCursorPos");
     symbol(library.set_scroll_callback, "glfwSetScrollCallback");
     symbol(library.set_window_refresh_callback, "glfwSetWindowRefreshCallback");
     symbol(library.get_proc_address, "glfwGetProcAddress");

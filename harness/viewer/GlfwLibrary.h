@@ -38,6 +38,7 @@ struct GlfwLibrary {
   decltype(&glfwSetCharCallback) set_char_callback = nullptr;
   decltype(&glfwSetMouseButtonCallback) set_mouse_button_callback = nullptr;
   decltype(&glfwSetCursorPosCallback) set_cursor_pos_callback = nullptr;
+  decltype(&glfwGetCursorPos) get_cursor_pos = nullptr;
   decltype(&glfwSetScrollCallback) set_scroll_callback = nullptr;
   decltype(&glfwSetWindowRefreshCallback) set_window_refresh_callback = nullptr;
   decltype(&glfwGetProcAddress) get_proc_address = nullptr;

@@ -45,11 +45,14 @@ std::vector<KeyRow> make_rows() {
         {k(NamedKey::up), A::parameter_up}, {k(NamedKey::down), A::parameter_down}}},
       {"e", "split view: render | reference | error heat map", ours, {{c('e'), A::toggle_split}}},
       {"c", "screenshot: PNG and EXR under --out", ours, {{c('c'), A::screenshot}}},
+      {"i", "inspect the pixel under the cursor: its shader's lines and values (stdout)", ours,
+       {{c('i'), A::inspect}}},
       {"r", "reset the view, the light and the parameters", ours, {{c('r'), A::reset}}},
       {"h, H", "print this table", "Cg, GLSL (help)", {{c('h'), A::help}, {c('H'), A::help}}},
       {"q, Q, Esc", "quit", cg_glsl, {{c('q'), A::quit}, {c('Q'), A::quit}, {k(NamedKey::escape), A::quit}}},
       {"mouse drag", "move the light (left button)", ours, {}},
       {"mouse wheel", "zoom", ours, {}},
+      {"right click", "inspect the pixel clicked, as i", ours, {}},
   };
 }
 

@@ -41,6 +41,7 @@ enum class ViewerAction {
   parameter_down,
   toggle_split,
   screenshot,
+  inspect,
   reset,
   help,
   quit,

@@ -28,6 +28,15 @@ Placement place(int fb_width, int fb_height, int image_width, int image_height) 
   return p;
 }
 
+std::optional<std::pair<int, int>> pixel_at(const Placement& p, double fb_x, double fb_y) {
+  if (p.empty() || fb_x < p.x || fb_y < p.y || fb_x >= p.x + p.width || fb_y >= p.y + p.height) return std::nullopt;
+  // As scaled() picks them: window pixel (x, y) shows image pixel floor((x + 0.5) / zoom).
+  const int column = int(std::floor((std::floor(fb_x - p.x) + 0.5) / p.zoom));
+  const int row = int(std::floor((std::floor(fb_y - p.y) + 0.5) / p.zoom));
+  const int width = int(std::lround(p.width / p.zoom)), height = int(std::lround(p.height / p.zoom));
+  return std::pair{std::clamp(column, 0, width - 1), std::clamp(row, 0, height - 1)};
+}
+
 DisplayImage scaled(const DisplayImage& image, const Placement& p) {
   if (p.empty() || image.width <= 0 || image.height <= 0) return {};
   if (p.width == image.width && p.height == image.height) return image;

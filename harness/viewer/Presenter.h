@@ -7,7 +7,9 @@
 // window pixels when it fits at 1:1 or more; and both read back what they present.
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <utility>
 
 #include "core/Error.h"
 #include "viewer/SplitView.h"
@@ -31,6 +33,10 @@ struct Placement {
   bool empty() const { return width <= 0 || height <= 0; }
 };
 Placement place(int fb_width, int fb_height, int image_width, int image_height);
+
+// The image pixel under framebuffer position (fb_x, fb_y) (y from the top), the inverse of
+// `scaled`; none outside the placed image.
+std::optional<std::pair<int, int>> pixel_at(const Placement& placement, double fb_x, double fb_y);
 
 // `image` at the placement's size, each window pixel the image pixel under its centre
 // (at a whole zoom, each image pixel repeated zoom x zoom times: what glPixelZoom draws).

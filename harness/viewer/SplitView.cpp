@@ -9,6 +9,13 @@ namespace shaderbed::viewer {
 
 DisplayImage render_panel(const Image& render) { return {render.width, render.height, png_pixels(render)}; }
 
+std::optional<std::pair<int, int>> panel_pixel(int x, int y, int panel_width, int panel_height, int panels) {
+  if (x < 0 || y < 0 || y >= panel_height || panel_width <= 0) return std::nullopt;
+  const int pitch = panel_width + kSplitGap;
+  if (x / pitch >= panels || x % pitch >= panel_width) return std::nullopt;
+  return std::pair{x % pitch, y};
+}
+
 Image reference_as_image(const ReferenceImage& reference) {
   Image image(reference.width, reference.height);
   for (size_t i = 0; i < reference.rgba.size(); ++i) image.rgba[i] = float(reference.rgba[i]);

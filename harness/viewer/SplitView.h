@@ -5,6 +5,7 @@
 // the error map scaled so the case's interior tolerance is mid grey, as in the HTML report.
 #include <cstdint>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "compare/ImageComparison.h"
@@ -28,6 +29,10 @@ DisplayImage empty_panel(int width, int height);
 
 // Panels left to right with kSplitGap black columns between them.
 DisplayImage side_by_side(const std::vector<DisplayImage>& panels);
+
+// The pixel of one panel under pixel (x, y) of `panels` panels panel_width wide laid side
+// by side (each panel shows the same pixels of the cell); none in a gap or outside.
+std::optional<std::pair<int, int>> panel_pixel(int x, int y, int panel_width, int panel_height, int panels);
 
 // The reference as a float image (what the screenshot's EXR holds, and what the panel shows).
 Image reference_as_image(const ReferenceImage& reference);

@@ -15,6 +15,7 @@
 #include "run/ParameterOverrides.h"
 #include "run/Runner.h"
 #include "viewer/FileWatcher.h"
+#include "twin/PixelListing.h"
 #include "viewer/FrameWorker.h"
 #include "viewer/Screenshot.h"
 #include "viewer/SplitView.h"
@@ -69,13 +70,15 @@ std::string verdict_text(const Frame& f) {
   return f.verdict;
 }
 
-std::string title_of(const ViewerState& state, const Frame* good, const std::optional<Error>& problem) {
+std::string title_of(const ViewerState& state, const Frame* good, const std::optional<Error>& problem,
+                     const std::string& inspected = "") {
   std::string title = "shaderbed view: " + cell_text(state);
   if (problem) title += " | ERROR " + problem->to_string() + (good ? " (last good image shown)" : "");
   else if (good) title += " | " + verdict_text(*good);
   const std::string params = parameters_text(state);
   if (!params.empty()) title += " | " + params;
   if (good) title += fmt::format(" | draw {:.1f} ms, frame {:.0f} ms", good->draw_ms, good->frame_ms);
+  if (!inspected.empty()) title += " | " + inspected;
   return title;
 }
 
@@ -90,6 +93,46 @@ DisplayImage compose(const Frame& frame, bool split) {
 }
 
 int content_width(int size, bool split) { return split ? 3 * size + 2 * kSplitGap : size; }
+
+std::string values_text(const std::vector<double>& values) {
+  if (values.size() == 1) return fmt::format("{:.6g}", values.front());
+  std::vector<std::string> each;
+  for (double v : values) each.push_back(fmt::format("{:.6g}", v));
+  return fmt::format("({})", fmt::join(each, ", "));
+}
+
+// The inspector on stdout: the cell and the pixel, then the listing (twin/PixelListing.h);
+// a pixel with nothing to list is one line.
+std::string inspection_text(const Inspection& in, int size) {
+  std::string head = fmt::format("inspect {}, pixel ({}, {}) of {}x{} (row 0 at the top)", cell_text(in.state), in.x, in.y,
+                                 size, size);
+  if (!in.explanation) return head + ": " + in.note + "\n";
+  const PixelExplanation& e = *in.explanation;
+  head += e.against.empty() ? ", by its double twin (no original to match: a model reference)"
+                            : ", by its double twin, values matched against " + e.against;
+  return head + fmt::format(" ({:.0f} ms):\n", in.ms) + twin::listing_text(e.lines);
+}
+
+// The inspector in the title: the first value that matches nothing in the original, else
+// the line that wrote last.
+std::string inspection_summary(const Inspection& in) {
+  const std::string at = fmt::format("pixel ({}, {})", in.x, in.y);
+  if (!in.explanation) return in.note.starts_with(at) ? in.note : at + ": " + in.note;
+  const auto& lines = in.explanation->lines;
+  if (lines.empty()) return at + ": no line executed";
+  const auto line_value = [&](const twin::ListedLine& l, const twin::ListedValue& v) {
+    return fmt::format("{}:{} {}{}", std::filesystem::path(l.file).filename().string(), l.line,
+                       v.name.empty() ? "" : v.name + " = ", values_text(v.values));
+  };
+  for (const twin::ListedLine& l : lines)
+    for (const twin::ListedValue& v : l.values)
+      if (v.departs) return at + ": " + line_value(l, v) + " matches nothing in " + in.explanation->against;
+  const twin::ListedLine& last = lines.back();
+  const std::string tail = last.values.empty() ? fmt::format("{}:{}", std::filesystem::path(last.file).filename().string(), last.line)
+                                               : line_value(last, last.values.back());
+  return at + fmt::format(": {} lines{}, last {}", lines.size(),
+                          in.explanation->against.empty() ? "" : ", each value matches " + in.explanation->against, tail);
+}
 
 }  // namespace
 
@@ -158,10 +201,20 @@ int run_viewer(const ViewerOptions& o) {
   int frames = 0;
   std::vector<double> draw_times;
   auto last_poll = Clock::now();
+  // The inspector (i, a right click, --inspect): asked one at a time of the render thread.
+  std::deque<InspectRequest> inspections;
+  bool inspecting = false;
+  std::optional<Inspection> inspected;   // the last answer, in the title while its image is up
+  std::deque<std::pair<int, int>> inspect_at_start(o.inspect.begin(), o.inspect.end());
   bool quit = false;
   int status = 0;
 
   const auto current_problem = [&] { return case_problem ? case_problem : problem; };
+  // The last inspection's summary stays in the title while its image is up.
+  const auto title_now = [&] {
+    return title_of(state, good ? &*good : nullptr, current_problem(),
+                    inspected && inspected->state.same_image(state) ? inspection_summary(*inspected) : "");
+  };
   const auto show = [&] {
     // The backend that drew the image on screen decides how it is presented (before the
     // first frame, the cell's): B between vulkan and gl makes the window again.
@@ -170,7 +223,7 @@ int run_viewer(const ViewerOptions& o) {
       quit = true, status = 2;
       return;
     }
-    win.set_title(title_of(state, good ? &*good : nullptr, current_problem()));
+    win.set_title(title_now());
     if (good) win.show(compose(*good, state.split), current_problem().has_value());
     else win.show({}, current_problem().has_value());
     tell();
@@ -210,6 +263,40 @@ int run_viewer(const ViewerOptions& o) {
     return true;
   };
 
+  const auto inspect_pixel = [&](int x, int y) {
+    inspections.push_back({{current_case, state, o.size, 0, false}, x, y});
+  };
+  // The pixel under window position (x, y): in the split view, each panel's pixels are the cell's.
+  const auto inspect_under = [&](double x, double y) {
+    const auto at = win.image_pixel(x, y, content_width(o.size, state.split), o.size);
+    const auto pixel = at ? panel_pixel(at->first, at->second, o.size, o.size, state.split ? 3 : 1) : std::nullopt;
+    if (!pixel) {
+      fmt::print("inspect: the cursor ({:.0f}, {:.0f}) is not over the image\n", x, y);
+      std::fflush(stdout);
+      return;
+    }
+    inspect_pixel(pixel->first, pixel->second);
+  };
+  // Prints an answer that came in and asks the next question; true when an answer came in.
+  const auto take_inspection = [&] {
+    bool answered = false;
+    if (inspecting) {
+      std::optional<Inspection> answer = worker.take_inspection();
+      if (!answer) return false;
+      fmt::print("{}", inspection_text(*answer, o.size));
+      std::fflush(stdout);
+      inspected = std::move(answer);
+      inspecting = false;
+      answered = true;
+    }
+    if (!inspections.empty()) {
+      worker.inspect(std::move(inspections.front()));
+      inspections.pop_front();
+      inspecting = true;
+    }
+    return answered;
+  };
+
   uint64_t last_frame = 0;   // the generation of the last frame that arrived
   // A pending screenshot (c), once its frame has arrived and the window has its size.
   const auto take_screenshot_when_due = [&] {
@@ -234,8 +321,10 @@ int run_viewer(const ViewerOptions& o) {
       const bool split_before = state.split;
       if (e.kind == InputEvent::Kind::drag) drag_light(state, e.dx, e.dy, win.height());
       else if (e.kind == InputEvent::Kind::scroll) scroll_zoom(state, e.steps);
+      else if (e.kind == InputEvent::Kind::inspect) inspect_under(e.x, e.y);
       else switch (handle_key(state, e.key)) {
           case Effect::quit: quit = true; break;
+          case Effect::inspect: inspect_under(e.x, e.y); break;
           case Effect::help: fmt::print("{}", key_table()), std::fflush(stdout); break;
           case Effect::screenshot:
             if (!state.same_image(requested)) request();
@@ -277,34 +366,45 @@ int run_viewer(const ViewerOptions& o) {
     }
     if (!state.same_image(requested)) request();
 
+    const bool answered = take_inspection();   // its summary goes into the title
     std::optional<Frame> frame = worker.take();
-    if (!frame) {
+    if (!frame && !answered) {
       if (touched) show();   // the split view, the selected parameter, the title
       take_screenshot_when_due();   // e.g. once a resize has landed
       continue;
     }
-    ++frames;
-    last_frame = frame->generation;
-    if (frame->problem) {
-      problem = frame->problem;
-    } else {
-      problem.reset();
-      if (!case_problem) reported_problem.clear();
-      draw_times.push_back(frame->draw_ms);
-      good = std::move(*frame);
+    if (frame) {
+      ++frames;
+      last_frame = frame->generation;
+      if (frame->problem) {
+        problem = frame->problem;
+      } else {
+        problem.reset();
+        if (!case_problem) reported_problem.clear();
+        draw_times.push_back(frame->draw_ms);
+        good = std::move(*frame);
+      }
+      report_problem();
+      if (reload_pending) {
+        fmt::print("reloaded {} in {:.0f} ms{}\n", fmt::join(reloaded_files, ", "), ms_since(reload_seen),
+                   problem ? ": " + problem->to_string() : "");
+        std::fflush(stdout);
+        reload_pending = false;
+      }
     }
-    report_problem();
-    if (reload_pending) {
-      fmt::print("reloaded {} in {:.0f} ms{}\n", fmt::join(reloaded_files, ", "), ms_since(reload_seen),
-                 problem ? ": " + problem->to_string() : "");
-      std::fflush(stdout);
-      reload_pending = false;
-    }
+    // --inspect X,Y: once the first frame is in.
+    if (good)
+      while (!inspect_at_start.empty()) {
+        inspect_pixel(inspect_at_start.front().first, inspect_at_start.front().second);
+        inspect_at_start.pop_front();
+      }
+    take_inspection();
     show();
     if (quit) break;
     take_screenshot_when_due();
-    // --screenshot FILE --frames N: N frames, then the file, then exit.
+    // --screenshot FILE --frames N: N frames (and the --inspect answers), then the file, then exit.
     if (!o.screenshot.empty() && !screenshot_pending && queue.empty() && last_frame == generation) {
+      if (inspecting || !inspections.empty()) continue;
       if (frames < o.frames) {
         request();   // the same image again: one more frame
         continue;
@@ -315,7 +415,7 @@ int run_viewer(const ViewerOptions& o) {
         std::ranges::sort(sorted);
         fmt::print("{} frames: draw median {:.2f} ms\n", frames, sorted[sorted.size() / 2]);
       }
-      fmt::print("{}\n", title_of(state, good ? &*good : nullptr, current_problem()));
+      fmt::print("{}\n", title_now());
       quit = true;
     }
   }

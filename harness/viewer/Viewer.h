@@ -7,6 +7,7 @@
 // frame is drawn only when something changed, so an idle viewer costs nothing.
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "viewer/ViewerState.h"
@@ -23,6 +24,7 @@ struct ViewerOptions {
   std::string screenshot;            // --screenshot FILE: draw `frames` frames, write FILE, exit
   int frames = 1;
   bool split = false;                // start in the split view
+  std::vector<std::pair<int, int>> inspect;   // --inspect X,Y: pixels inspected (as `i` does) after the first frame
   std::string probe_binary;          // the shaderbed executable (compile probe); "" = compile in-process only
 };
 

@@ -255,6 +255,7 @@ Effect apply(ViewerState& s, ViewerAction action) {
     }
     case A::toggle_split: s.split = !s.split; return Effect::redraw;
     case A::screenshot: return Effect::screenshot;
+    case A::inspect: return Effect::inspect;
     case A::reset: {
       ViewerState fresh;
       fresh.menu = s.menu;

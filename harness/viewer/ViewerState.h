@@ -77,7 +77,7 @@ ViewerState with_case(const ViewerState& old, const Case& reloaded);
 // (backend, path) pairs a language can be drawn on, in the order B steps through them.
 std::vector<std::pair<std::string, ShaderPath>> backend_paths_of(Language language);
 
-enum class Effect { none, redraw, screenshot, help, quit };
+enum class Effect { none, redraw, screenshot, inspect, help, quit };
 
 // The key's action applied to the state; what the caller must do next.
 Effect apply(ViewerState& state, ViewerAction action);

@@ -143,7 +143,10 @@ struct ViewerWindow::Impl {
     present_problem.clear();
     glfw->set_window_user_pointer(window, this);
     glfw->set_char_callback(window, [](GLFWwindow* w, unsigned int codepoint) {
-      Impl::of(w).push({.kind = InputEvent::Kind::key, .key = KeyPress::typed(char32_t(codepoint))});
+      Impl& self = Impl::of(w);
+      double x = 0, y = 0;   // where the cursor is: `i` inspects the pixel under it
+      self.glfw->get_cursor_pos(w, &x, &y);
+      self.push({.kind = InputEvent::Kind::key, .key = KeyPress::typed(char32_t(codepoint)), .x = x, .y = y});
     });
     glfw->set_key_callback(window, [](GLFWwindow* w, int key, int, int action, int mods) {
       if (action == GLFW_RELEASE) return;
@@ -151,7 +154,13 @@ struct ViewerWindow::Impl {
         Impl::of(w).push({.kind = InputEvent::Kind::key, .key = KeyPress::key(*named, (mods & GLFW_MOD_SHIFT) != 0)});
     });
     glfw->set_mouse_button_callback(window, [](GLFWwindow* w, int button, int action, int) {
-      if (button == GLFW_MOUSE_BUTTON_LEFT) Impl::of(w).dragging = action == GLFW_PRESS;
+      Impl& self = Impl::of(w);
+      if (button == GLFW_MOUSE_BUTTON_LEFT) self.dragging = action == GLFW_PRESS;
+      if (button == GLFW_MOUSE_BUTTON_RIGHT && action == GLFW_PRESS) {   // inspect the pixel clicked
+        double x = 0, y = 0;
+        self.glfw->get_cursor_pos(w, &x, &y);
+        self.push({.kind = InputEvent::Kind::inspect, .x = x, .y = y});
+      }
     });
     glfw->set_cursor_pos_callback(window, [](GLFWwindow* w, double x, double y) {
       Impl& self = Impl::of(w);
@@ -273,6 +282,16 @@ double ViewerWindow::height() const {
   int w = 0, h = 0;
   impl_->glfw->get_window_size(impl_->window, &w, &h);
   return h;
+}
+
+std::optional<std::pair<int, int>> ViewerWindow::image_pixel(double x, double y, int image_width,
+                                                            int image_height) const {
+  int w = 0, h = 0, fb_width = 0, fb_height = 0;
+  impl_->glfw->get_window_size(impl_->window, &w, &h);
+  impl_->glfw->get_framebuffer_size(impl_->window, &fb_width, &fb_height);
+  if (w <= 0 || h <= 0) return std::nullopt;
+  // Window (screen) coordinates to the framebuffer's, where the presenters place the image.
+  return pixel_at(place(fb_width, fb_height, image_width, image_height), x * fb_width / w, y * fb_height / h);
 }
 
 }  // namespace shaderbed::viewer

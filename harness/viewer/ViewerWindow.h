@@ -10,6 +10,8 @@
 // size, place, title and input queue). Everything here runs on the main thread, except
 // wake().
 #include <memory>
+#include <optional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -23,10 +25,11 @@ struct GLFWwindow;
 namespace shaderbed::viewer {
 
 struct InputEvent {
-  enum class Kind { key, drag, scroll } kind = Kind::key;
+  enum class Kind { key, drag, scroll, inspect } kind = Kind::key;
   KeyPress key;
   double dx = 0, dy = 0;   // drag: window pixels moved with the left button down (y down)
   double steps = 0;        // scroll: wheel steps, positive away from the user
+  double x = 0, y = 0;     // key, inspect (a right click): the cursor, in window pixels from the top left
 };
 
 class ViewerWindow {
@@ -71,6 +74,9 @@ class ViewerWindow {
   std::vector<InputEvent> take_events();
   bool close_requested() const;
   double height() const;   // in screen pixels, for drags
+  // The pixel of a shown image of image_width x image_height under window position (x, y)
+  // (an InputEvent's), as the presenters place it (viewer/Presenter.h); none outside it.
+  std::optional<std::pair<int, int>> image_pixel(double x, double y, int image_width, int image_height) const;
 
  private:
   struct Impl;

@@ -152,6 +152,14 @@ class ViewerSession {
   }
   // xdotool key names: "c", "M", "greater", "plus", "Tab" ...
   void keys(const std::string& names) { run_shell(display_.env() + "xdotool key --window " + window_ + " " + names); }
+  // The pointer to window position (x, y); a right click there.
+  void pointer(int x, int y) {
+    run_shell(display_.env() + "xdotool mousemove --window " + window_ + " " + std::to_string(x) + " " + std::to_string(y));
+  }
+  void click(int x, int y) {
+    pointer(x, y);
+    run_shell(display_.env() + "xdotool click --window " + window_ + " 3");
+  }
   std::string title() const {
     auto [status, name] = run_shell(display_.env() + "xdotool getwindowname " + window_);
     while (!name.empty() && name.back() == '\n') name.pop_back();

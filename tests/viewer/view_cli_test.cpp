@@ -376,6 +376,78 @@ TEST(View, AShaderThatCrashesTheCompilerDoesNotTakeTheViewerDown) {
   EXPECT_EQ(viewer.quit(), 0) << viewer.errors();
 }
 
+// The pixel inspector (i, a right click, --inspect): the cell's shader at one pixel, line
+// by line, by its double twin, with what each value matches in a differential case's
+// original. tinted_diffuse/light_negated plants -L in its last line: lit from above in
+// the original, the port's upper half is dark, and its planted line's value matches
+// nothing there.
+const std::string kPlanted = "--cases-dir " + (kSource / "tests" / "differential" / "cases").string() +
+                             " --case tinted_diffuse --variant light_negated --lang glsl --backend vulkan --shape sphere";
+
+// The inspection's listing on stdout, from its "inspect ..., pixel (x, y)" head to the next blank-free block.
+std::string listing_of(const std::string& out, int x, int y) {
+  const std::string head = "pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") of ";
+  const size_t at = out.find(head);
+  if (at == std::string::npos) return "";
+  const size_t start = out.rfind("inspect ", at);
+  const size_t next = out.find("\ninspect ", at);
+  return out.substr(start, next == std::string::npos ? std::string::npos : next + 1 - start);
+}
+
+TEST(View, InspectPrintsThePixelsLinesValuesAndWhatMatchesNothing) {
+  TempDir dir("view_inspect");
+  std::pair<int, std::string> viewed;
+  {
+    XvfbStartLock lock;
+    viewed = run_shell("xvfb-run -a " + kBinary + " view " + kPlanted + " --size 64 --inspect 32,16 --inspect 0,0" +
+                       " --screenshot " + (dir / "view.png") + " 2>/dev/null");
+  }
+  ASSERT_EQ(viewed.first, 0) << viewed.second;
+  const std::string& out = viewed.second;
+  const std::string listing = listing_of(out, 32, 16);
+  ASSERT_FALSE(listing.empty()) << out;
+  EXPECT_NE(listing.find("inspect tinted_diffuse/light_negated glsl vulkan/spirv sphere, pixel (32, 16) of 64x64"),
+            std::string::npos) << listing;
+  EXPECT_NE(listing.find("values matched against the original"), std::string::npos) << listing;
+  // Every executed line of the fragment shader, with its values.
+  EXPECT_NE(listing.find("light_negated.frag:13  vec3 n = normalize(vNormal);"), std::string::npos) << listing;
+  EXPECT_NE(listing.find("      n = ("), std::string::npos) << listing;
+  // The planted line: its value departs from everything the original computed.
+  const size_t planted = listing.find("light_negated.frag:14");
+  ASSERT_NE(planted, std::string::npos) << listing;
+  EXPECT_NE(listing.find("matches nothing", planted), std::string::npos) << listing;
+  EXPECT_EQ(listing.substr(0, planted).find("matches nothing"), std::string::npos)
+      << "the lines before the planted one match the original:\n" << listing;
+  // Outside the shape: one line, no listing; the title carries the last answer.
+  EXPECT_NE(out.find("pixel (0, 0) of 64x64 (row 0 at the top): pixel (0, 0) is not covered by the shape\n"),
+            std::string::npos) << out;
+  EXPECT_NE(out.find("| pixel (0, 0) is not covered by the shape\n"), std::string::npos) << out;
+}
+
+TEST(View, TheIKeyAndARightClickInspectThePixelUnderTheCursor) {
+  TempDir dir("view_inspect_keys");
+  VirtualDisplay display(dir);
+  ASSERT_TRUE(display.ready());
+  constexpr int kFrame = 4;   // viewer/Presenter.h: the window is the image and a frame around it
+  ViewerSession viewer(display, dir, kPlanted + " --size 64 --out " + (dir / "shots"));
+  ASSERT_TRUE(viewer.has_window()) << viewer.errors();
+  ASSERT_FALSE(viewer.screenshot().empty()) << viewer.errors();   // the first frame is up
+  viewer.pointer(kFrame + 32, kFrame + 16);
+  viewer.keys("i");
+  ASSERT_TRUE(viewer.wait_for_output("pixel (32, 16) of 64x64")) << viewer.output() << viewer.errors();
+  ASSERT_TRUE(wait_until([&] { return listing_of(viewer.output(), 32, 16).find("matches nothing") != std::string::npos; }, 20))
+      << viewer.output();
+  EXPECT_TRUE(wait_until([&] { return viewer.title().find("| pixel (32, 16): light_negated.frag:14") != std::string::npos; }, 10))
+      << viewer.title();
+  // Split view: a right click on the reference panel inspects the same pixel of the cell.
+  ASSERT_FALSE(viewer.screenshot("e").empty()) << viewer.errors();   // waits for the wider window
+  viewer.click(kFrame + 64 + 2 + 30, kFrame + 20);
+  ASSERT_TRUE(viewer.wait_for_output("pixel (30, 20) of 64x64")) << viewer.output() << viewer.errors();
+  viewer.click(kFrame + 64, kFrame + 20);   // the gap between the panels
+  EXPECT_TRUE(viewer.wait_for_output("is not over the image")) << viewer.output();
+  EXPECT_EQ(viewer.quit(), 0) << viewer.errors();
+}
+
 TEST(View, WithoutADisplayItSaysSoAndExits2) {
   const auto [status, out] = run_shell("env -u DISPLAY -u WAYLAND_DISPLAY " + kBinary + " view --case phong");
   EXPECT_EQ(status, 2) << out;

@@ -1,5 +1,6 @@
 // `shaderbed view`: one cell in a window, drawn as `run` draws it, with the book's test-bed
 // keys, the reference and the error beside it, and live reload (harness/viewer/).
+#include <cstdio>
 #include <memory>
 
 #include <fmt/format.h>
@@ -45,14 +46,29 @@ Command add_view_command(CLI::App& app) {
   cmd->add_option("--frames", o.frames, "Frames to draw before --screenshot is written")
       ->capture_default_str()
       ->check(CLI::Range(1, 100000));
+  auto pixels = std::make_shared<std::vector<std::string>>();
+  cmd->add_option("--inspect", *pixels,
+                  "Inspect pixel X,Y (the image's, row 0 at the top) once the first frame is drawn, as the i key does: "
+                  "the lines its shader executed there with their values, by its double twin, on stdout (repeatable; "
+                  "with --screenshot, before it exits)")
+      ->check([](const std::string& text) -> std::string {
+        int x = 0, y = 0;
+        char end = 0;
+        return std::sscanf(text.c_str(), "%d,%d%c", &x, &y, &end) == 2 ? "" : "expected X,Y (two whole numbers)";
+      });
   cmd->add_option("--cases-dir", o.cases_dir, "Folder of case files")->default_str(default_cases_dir());
   cmd->footer("Keys (also printed by h in the window):\n" + viewer::key_table(2) +
               "\nThe window title shows the cell, its verdict and max error against the reference, the parameters "
               "(the selected one in brackets) and the draw and frame times; a compile error shows there with its file "
               "and line, and on stderr, while the last good image stays up.");
 
-  return {cmd, [args] {
+  return {cmd, [args, pixels] {
             viewer::ViewerOptions options = *args;
+            for (const std::string& text : *pixels) {
+              int x = 0, y = 0;
+              std::sscanf(text.c_str(), "%d,%d", &x, &y);
+              options.inspect.emplace_back(x, y);
+            }
             if (options.cases_dir.empty()) options.cases_dir = default_cases_dir();
             options.probe_binary = this_executable().string();
             return viewer::run_viewer(options);
