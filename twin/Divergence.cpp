@@ -148,15 +148,21 @@ Relation relate(const ValueFingerprint& v, const Counterpart& c, uint32_t k, siz
   for (auto [a, b] : pairs) diff2 += (a - b) * (a - b), ref2 += b * b;
   r.distance = std::sqrt(diff2 / std::max(ref2, 1e-300));
   double lo = INFINITY, hi = -INFINITY, dlo = INFINITY, dhi = -INFINITY, worst = 0;
+  size_t equal = 0, unscalable = 0;   // pairs within rounding; pairs no factor relates (b = 0, a not)
   for (auto [a, b] : pairs) {
     if (std::abs(b) > 1e-9) lo = std::min(lo, a / b), hi = std::max(hi, a / b);
+    else if (std::abs(a) > 1e-9) ++unscalable;
     dlo = std::min(dlo, a - b), dhi = std::max(dhi, a - b);
     worst = std::max(worst, std::abs(a - b));
+    equal += close(a, b);
   }
   const auto same = [](double x, double y) { return std::abs(x - y) <= 1e-4 * std::max({std::abs(x), std::abs(y), 1e-12}); };
-  if (std::isfinite(lo) && same(lo, hi)) r.text = "off by a factor of " + number((lo + hi) / 2);
+  if (equal > 0 && equal < pairs.size())
+    r.text = "equal at " + std::to_string(equal) + " of " + std::to_string(pairs.size()) + " values, up to " + number(worst) +
+             " off at the others";
+  else if (std::isfinite(lo) && unscalable == 0 && same(lo, hi)) r.text = "off by a factor of " + number((lo + hi) / 2);
   else if (same(dlo, dhi) || std::abs(dhi - dlo) <= 1e-9) r.text = "off by " + number((dlo + dhi) / 2);
-  else if (std::isfinite(lo) && lo > 0) r.text = "off by a factor that varies over the pixels (" + number(lo) + " to " + number(hi) + ")";
+  else if (std::isfinite(lo) && lo > 0 && unscalable == 0) r.text = "off by a factor that varies over the pixels (" + number(lo) + " to " + number(hi) + ")";
   else r.text = "differs by up to " + number(worst);
   return r;
 }

@@ -252,6 +252,26 @@ class Writer {
     return out;
   }
 
+  // Where a failing shader departs: the line, and both sources side by side with the
+  // shader's line and the original's nearest one highlighted.
+  static std::string departs(const CellResult::Divergence& d) {
+    if (d.kind == "error") return fmt::format("<p class=\"note\"><b>departs</b>: not localised: {}</p>", escape(d.error));
+    std::string h = fmt::format("<div class=\"departs\"><p><b>departs</b>: {}</p>", escape(d.text));
+    const auto listing = [](const CellResult::Divergence::Excerpt& e, const std::string& title) {
+      if (e.lines.empty()) return std::string();
+      std::string pre = fmt::format("<pre title=\"{}\"><b>{}</b>\n", escape(e.file), escape(title + ": " + e.file));
+      for (size_t i = 0; i < e.lines.size(); ++i) {
+        const int line = e.first + int(i);
+        const std::string text = fmt::format("<span class=\"ln\">{}</span>{}", line, escape(e.lines[i]));
+        pre += line == e.mark ? "<span class=\"hit\">" + text + "</span>" : text + "\n";
+      }
+      return pre + "</pre>";
+    };
+    const std::string sources = listing(d.port_source, "shader") + listing(d.original_source, "original");
+    if (!sources.empty()) h += "<div class=\"src\">" + sources + "</div>";
+    return h + "</div>";
+  }
+
   std::string card(size_t index) const {
     const CellResult& r = report_.results[index];
     const CellMetrics& m = r.metrics;
@@ -278,6 +298,8 @@ class Writer {
                          e.fits ? "<b>yes</b>" : "no", sci(e.residual), sci(e.rmse));
       h += "</table>";
     }
+
+    if (r.divergence) h += departs(*r.divergence);
 
     const std::string reference_caption = r.reference.kind == "render"   ? "original (" + escape(r.reference.label) + ")"
                                           : r.reference.kind == "images" ? std::string("stored image")
