@@ -18,6 +18,7 @@ Result<BenchReport> run_bench(const BenchOptions& o) {
   for (const ComparedCell& cell : o.compared)
     if (auto ok = check_compared_cell(cell, o.cases_dir); !ok) return std::unexpected(ok.error());
   ProcessOptions processes{.cell_args = o.cell_args.empty() ? default_cell_args() : o.cell_args,
+                           .size = o.size,
                            .runs = o.runs,
                            .on_step = o.on_step};
   for (const std::string& c : o.cases) processes.suite_args.insert(processes.suite_args.end(), {"--case", c});

@@ -71,7 +71,10 @@ nlohmann::json processes(const ProcessCosts& p) {
             {"twin_of_warm", ratio(p.twin.wall_ms, p.warm.wall_ms)},
             {"cold_of_jit_floor", ratio(p.cold.wall_ms, jit_floor)}}},
           {"cell", {{"cold", process(p.cell_cold)}, {"warm", process(p.cell_warm)}}},
-          {"startup", startup}};
+          {"startup", startup},
+          {"failing_cell", p.failing_cell.size() == 2
+                               ? nlohmann::json{{"run", process(p.failing_cell[0])}, {"explain", process(p.failing_cell[1])}}
+                               : nlohmann::json(nullptr)}};
 }
 
 }  // namespace

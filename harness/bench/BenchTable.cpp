@@ -108,6 +108,14 @@ std::string process_section(const BenchReport& r) {
     timed(t, t.label == "--help" ? fmt::format("goal <= {} ms: {}", G::help_ms, verdict(t.wall.median <= G::help_ms)) : "");
   out += fmt::format("  one cell: shaderbed {}\n  medians [CI] of {} starts each\n\n", p.cell_warm.command,
                      p.cell_warm.wall_ms.size());
+  if (p.failing_cell.size() == 2) {
+    const ProcessTiming &run = p.failing_cell[0], &explain = p.failing_cell[1];
+    out += "Where a port goes wrong (one failing cell as a process, warm caches)\n";
+    timed(run, "its fits and the line where it departs included");
+    timed(explain, fmt::format("{:.2f}x run: the cell again, and its worst pixel line by line",
+                               run.wall.median > 0 ? explain.wall.median / run.wall.median : 0));
+    out += fmt::format("  cell: shaderbed {}\n\n", explain.command);
+  }
   return out;
 }
 

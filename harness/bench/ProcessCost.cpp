@@ -1,5 +1,7 @@
 #include "bench/ProcessCost.h"
 
+#include "run/Runner.h"
+
 #include <unistd.h>   // environ (glibc declares it with _GNU_SOURCE, which g++ and clang++ set)
 
 #include <chrono>
@@ -98,6 +100,16 @@ std::vector<std::string> default_cell_args() {
           "--shape", "sphere", "--repeat", "0", "--quiet"};
 }
 
+std::optional<std::pair<std::vector<std::string>, std::vector<std::string>>> failing_cell_commands(int size) {
+  const fs::path c = fs::path(default_cases_dir()).parent_path().parent_path() / "tests/differential/cases/tinted_diffuse.toml";
+  if (!fs::exists(c)) return std::nullopt;
+  const std::string n = std::to_string(size);
+  return std::pair{std::vector<std::string>{"run", "--case", c.string(), "--variant", "light_negated", "--lang", "glsl",
+                                            "--backend", "vulkan", "--shape", "sphere", "--size", n, "--repeat", "0", "--quiet"},
+                   std::vector<std::string>{"explain", c.string(), "--cell", "light_negated/glsl/vulkan/spirv/sphere",
+                                            "--size", n}};
+}
+
 Result<ProcessCosts> measure_processes(const ProcessOptions& o) {
   const auto step = [&](const std::string& text) {
     if (o.on_step) o.on_step(text);
@@ -136,6 +148,15 @@ Result<ProcessCosts> measure_processes(const ProcessOptions& o) {
     auto t = time_command(label, args, o.runs, dir, "cache-startup", false);
     if (!t) return std::unexpected(t.error());
     costs.startup.push_back(std::move(*t));
+  }
+
+  if (auto failing = failing_cell_commands(o.size)) {
+    step(fmt::format("a failing port's cell, run and explained, {} runs each", o.runs));
+    for (const auto& [label, args] : {std::pair{"run, failing cell", failing->first}, {"explain, same cell", failing->second}}) {
+      auto t = time_command(label, args, o.runs, dir, "cache-startup", false);
+      if (!t) return std::unexpected(t.error());
+      costs.failing_cell.push_back(std::move(*t));
+    }
   }
   return costs;
 }

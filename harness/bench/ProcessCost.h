@@ -5,6 +5,7 @@
 // timed by the wall clock from spawn to exit, side by side in one bench run. A private
 // cache folder (SHADERBED_CACHE_DIR) per state keeps the user's caches out of it.
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -49,11 +50,15 @@ struct ProcessCosts {
   SuiteProcess twin;                           // warm caches, every cell also drawn by its double twin
   ProcessTiming cell_cold, cell_warm;          // one cell per process
   std::vector<ProcessTiming> startup;          // --help, eval, merge
+  // A failing port's cell as `run` judges it (its convention fits and divergence included)
+  // and as `explain` explains its worst pixel, side by side; empty without the corpus.
+  std::vector<ProcessTiming> failing_cell;
 };
 
 struct ProcessOptions {
   std::vector<std::string> suite_args;         // run's selection: --case, --size, --jobs, --cases-dir, --out
   std::vector<std::string> cell_args;          // the one cell's selection
+  int size = 256;                              // the failing cell's image size
   int runs = 9;                                // per timed command
   std::function<void(const std::string&)> on_step;
 };
@@ -61,6 +66,10 @@ struct ProcessOptions {
 // The one cell bench times as a process: phong per pixel in GLSL on Vulkan, on the sphere
 // (what VkRunner's comparable test draws), untimed.
 std::vector<std::string> default_cell_args();
+
+// The failing cell bench times: tests/differential's tinted_diffuse port with the light
+// negated, GLSL on Vulkan, on the sphere; nothing when the source tree is not there.
+std::optional<std::pair<std::vector<std::string>, std::vector<std::string>>> failing_cell_commands(int size);
 
 Result<ProcessCosts> measure_processes(const ProcessOptions& options);
 

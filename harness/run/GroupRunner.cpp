@@ -278,8 +278,11 @@ struct GroupRunner::Impl final : GroupDrawer {
           const std::vector<twin::PixelAt> pixels = divergence_pixels(images[i], *group_image, classes_);
           const std::vector<twin::Counterpart> model = c.reference_render ? std::vector<twin::Counterpart>{}
                                                                           : reference.quantities(pixels);
-          if (c.reference_render || !model.empty())
+          if (c.reference_render || !model.empty()) {
+            const auto t0 = Clock::now();
             r.divergence = divergences_.locate(*this, g, g.cells[rendered[i]], r, pixels, model);
+            r.time_ms["divergence"] = ms_since(t0);   // the first cell of a variant and language pays it
+          }
         }
       } else {
         const ReferenceImage& own = own_references.at(rendered[i]);
