@@ -34,7 +34,7 @@ import time
 import tomllib
 
 SIZE = 32
-SIZED = {"run", "view", "sweep", "hard", "init", "port", "bench"}
+SIZED = {"run", "view", "sweep", "hard", "init", "port", "bench", "explain"}
 WHOLE_LIBRARY = {"run", "hard", "stats", "bench"}
 failures = []
 
