@@ -400,8 +400,8 @@ Divergence into_vertex_stage(const Divergence& fragment, const ProgramTrace& ver
 
 std::string Divergence::describe() const {
   if (kind == Kind::output_matches)
-    return "the port's twin computes " + against + "'s values at all " + std::to_string(pixels) +
-           " traced pixels: the difference is not in the shader's arithmetic";
+    return "no line departs: the shader's twin computes " + against + "'s values at all " + std::to_string(pixels) +
+           " traced pixels (a render that fails all the same differs outside the shader's arithmetic)";
   std::string s = (file.empty() ? std::string("(no source line)") : file + ":" + std::to_string(line));
   if (stage == "vertex") s += " (vertex stage)";
   if (!source_text.empty()) s += "  " + source_text;

@@ -134,32 +134,36 @@ CellResult::Divergence CellDivergence::locate(GroupDrawer& drawer, const CellGro
   if (!differential && model.empty()) return result = error_result("the reference shows no values to match against");
   if (pixels.empty()) return result = error_result("no interior pixel to trace");
   if (auto drawn = draw_twins(drawer, group, cell, row); !drawn) return result = error_result(drawn.error().message);
-  const auto port_input = port_->last_input();
-  auto port_trace = twin::trace_program(*port_input, pixels);
+  auto port_trace = twin::trace_program(*port_->last_input(), pixels);
   if (!port_trace) return result = error_result("the shader's twin could not trace it: " + port_trace.error().to_string());
-  if (!differential) {
-    twin::Divergence found = twin::localise_divergence(*port_trace, model, "the model", true);
-    if (found.varying_location >= 0)   // no vertex values to match: the line that writes it
-      if (auto vertex = twin::trace_vertex_program(*port_input, 1)) found = twin::into_vertex_stage(found, *vertex, {});
-    result = divergence_result(found);
-    add_excerpts(result, found.stage == "vertex" ? *port_input->program.vertex : *port_input->program.fragment, nullptr);
-    return result;
+  std::vector<twin::Counterpart> counterparts(model.begin(), model.end());
+  if (differential) {
+    auto original_trace = twin::trace_program(*original_->last_input(), pixels);
+    if (!original_trace)
+      return result = error_result("the original's twin could not trace it: " + original_trace.error().to_string());
+    counterparts = twin::counterparts_of(*original_trace);
   }
-  const auto original_input = original_->last_input();
-  auto original_trace = twin::trace_program(*original_input, pixels);
-  if (!original_trace)
-    return result = error_result("the original's twin could not trace it: " + original_trace.error().to_string());
-  twin::Divergence found = twin::localise_divergence(*port_trace, twin::counterparts_of(*original_trace));
+  return result = localise(*port_trace, counterparts, differential);
+}
+
+CellResult::Divergence CellDivergence::localise(const twin::ProgramTrace& port_trace,
+                                                std::span<const twin::Counterpart> counterparts, bool differential) {
+  const auto port_input = port_->last_input();
+  const auto original_input = differential ? original_->last_input() : std::nullopt;
+  twin::Divergence found = differential ? twin::localise_divergence(port_trace, counterparts)
+                                        : twin::localise_divergence(port_trace, counterparts, "the model", true);
   if (found.varying_location >= 0) {   // a varying departs: where its vertex stage does
     auto port_vertex = twin::trace_vertex_program(*port_input, 32);
-    auto original_vertex = twin::trace_vertex_program(*original_input, 32);
-    if (port_vertex && original_vertex)
-      found = twin::into_vertex_stage(found, *port_vertex, twin::counterparts_of(*original_vertex));
+    auto original_vertex = differential ? twin::trace_vertex_program(*original_input, 32)
+                                        : twin::TwinResult<twin::ProgramTrace>(twin::ProgramTrace{});
+    if (port_vertex && original_vertex)   // a model has no vertex values: the line that writes the varying
+      found = twin::into_vertex_stage(found, *port_vertex,
+                                      differential ? twin::counterparts_of(*original_vertex) : std::vector<twin::Counterpart>{});
   }
-  result = divergence_result(found);
+  CellResult::Divergence result = divergence_result(found);
   const bool vertex = found.stage == "vertex";
-  add_excerpts(result, vertex ? *port_input->program.vertex : *port_input->program.fragment,
-               vertex ? original_input->program.vertex.get() : original_input->program.fragment.get());
+  const auto stage_of = [&](const twin::Program& p) { return vertex ? p.vertex.get() : p.fragment.get(); };
+  add_excerpts(result, *stage_of(port_input->program), original_input ? stage_of(original_input->program) : nullptr);
   return result;
 }
 
@@ -189,6 +193,7 @@ Result<PixelExplanation> CellDivergence::explain(GroupDrawer& drawer, const Cell
     out.against = "the model";
   }
   out.lines = twin::pixel_listing(*port_trace, 0, counterparts);
+  if (!counterparts.empty()) out.divergence = localise(*port_trace, counterparts, differential);
   return out;
 }
 

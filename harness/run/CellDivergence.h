@@ -4,6 +4,7 @@
 // cell fails and a spread of others, and their values matched by fingerprint. Done once
 // per group, variant and language (the port's twin is the same on every backend and path).
 #include <map>
+#include <optional>
 #include <span>
 #include <utility>
 #include <vector>
@@ -30,6 +31,9 @@ struct PixelExplanation {
   int x = 0, y = 0;
   std::string against;                   // "the original", "the model" (values matched), or "" (none)
   std::vector<twin::ListedLine> lines;   // the fragment stage's, at the pixel
+  // Where the shader departs, over the same pixels: for a passing cell too (then, as a
+  // rule, its output matches).
+  std::optional<CellResult::Divergence> divergence;
 };
 
 class CellDivergence {
@@ -50,6 +54,11 @@ class CellDivergence {
                                    std::span<const twin::Counterpart> model = {});
 
  private:
+  // The divergence of the port's trace against `counterparts` (the original's, or the
+  // model's when not `differential`), followed into the vertex stage, with its excerpts;
+  // both twins' last draws are the cell's.
+  CellResult::Divergence localise(const twin::ProgramTrace& port, std::span<const twin::Counterpart> counterparts,
+                                  bool differential);
   // Both twins drawn for `cell` (the original's only when the group has one); the error
   // says which could not be.
   Result<void> draw_twins(GroupDrawer& drawer, const CellGroup& group, const PlannedCell& cell, const CellResult& row);

@@ -62,6 +62,9 @@ struct Thresholds {
 }  // namespace
 
 struct GroupRunner::Impl final : GroupDrawer {
+  std::optional<std::pair<std::string, std::optional<twin::PixelAt>>> explain_;   // request_explanation
+  std::optional<Result<PixelExplanation>> explanation_;
+
   Impl(const CellSettings& settings, const SceneSetup& scene, const StoredReferences& stored, bool gl_programs,
        StepObserver on_step)
       : settings_(settings), scene_(scene), on_step_(std::move(on_step)), references_(stored),
@@ -527,11 +530,6 @@ struct GroupRunner::Impl final : GroupDrawer {
   std::vector<PixelClass> classes_;                 // its reference, classified once for all its cells
   CellTwins twins_;                                 // --twin
   CellDivergence divergences_;                      // where a failing port departs
- public:
-  std::optional<std::pair<std::string, std::optional<twin::PixelAt>>> explain_;   // request_explanation
-  std::optional<Result<PixelExplanation>> explanation_;
-
- private:
   // explain_'s pixel of cell r (rendered as `image`), or where it is furthest from its
   // reference, traced against the context of divergence_pixels.
   void explain_pixel(const CellGroup& g, const PlannedCell& cell, const CellResult& r, const Image& image,

@@ -146,6 +146,22 @@ def main():
                 d = cell["divergence"]
                 problems.append(f"{cell['id']}: the correct port carries a divergence: "
                                 f"{d.get('file')}:{d.get('line')} {d.get('error', '')}")
+        # Localised although it passes (explain does for any cell): its twin must compute the
+        # original's values at every traced pixel, so no line of it is named.
+        if drawn and options.binary and not options.results:
+            cell = drawn[0]
+            case_file = os.path.join(root, "cases", c["case"] + ".toml")
+            args = [options.binary, "explain", case_file, "--cell", cell["id"], "--size", str(options.size), "--json", "-"]
+            done = subprocess.run(args, capture_output=True, text=True)
+            try:
+                d = json.loads(done.stdout).get("divergence", {})
+            except json.JSONDecodeError:
+                d = {"kind": f"(explain exited {done.returncode}: {done.stderr.strip()[:200]})"}
+            if d.get("kind") != "output_matches":
+                problems.append(f"{cell['id']}: explain names a line of the correct port: {d.get('kind')} "
+                                f"{d.get('file', '')}:{d.get('line', '')} {d.get('text', '')[:200]}")
+            else:
+                print(f"correct port {cell['id']}: {d['text']}")
 
     rows = []
     missing_entries = []

@@ -29,6 +29,11 @@ std::optional<twin::PixelAt> parse_pixel(const std::string& text) {
   return twin::PixelAt{x, y};
 }
 
+// The run's own for a failing cell, else the explanation's (a passing cell's too).
+const std::optional<CellResult::Divergence>& divergence_of(const ExplainedCell& e) {
+  return e.cell.divergence ? e.cell.divergence : e.pixel.divergence;
+}
+
 nlohmann::ordered_json explanation_json(const ExplainedCell& e) {
   using json = nlohmann::ordered_json;
   json lines = json::array();
@@ -44,7 +49,7 @@ nlohmann::ordered_json explanation_json(const ExplainedCell& e) {
               {"pixel", {e.pixel.x, e.pixel.y}},
               {"against", e.pixel.against},
               {"lines", std::move(lines)}};
-  if (const auto& d = e.cell.divergence) out["divergence"] = {{"kind", d->kind}, {"file", d->file}, {"line", d->line},
+  if (const auto& d = divergence_of(e)) out["divergence"] = {{"kind", d->kind}, {"file", d->file}, {"line", d->line},
                                                               {"text", d->kind == "error" ? d->error : d->text}};
   return out;
 }
@@ -100,7 +105,7 @@ Command add_explain_command(CLI::App& app) {
             fmt::print("{}: {}", r.id(), to_string(r.status));
             if (r.status == CellStatus::fail) fmt::print(" (max error {:.3g}, judged against {})", r.metrics.max_abs, r.reference.label);
             fmt::print("\n");
-            if (const auto& d = r.divergence) fmt::print("departs: {}\n", d->kind == "error" ? d->error : d->text);
+            if (const auto& d = divergence_of(e)) fmt::print("departs: {}\n", d->kind == "error" ? d->error : d->text);
             fmt::print("\npixel ({}, {}), executed by the shader's double twin{}:\n\n", e.pixel.x, e.pixel.y,
                        e.pixel.against.empty() ? "" : "; each value beside what it matches in " + e.pixel.against);
             fmt::print("{}", twin::listing_text(e.pixel.lines));
