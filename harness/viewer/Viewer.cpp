@@ -17,6 +17,7 @@
 #include "viewer/FileWatcher.h"
 #include "twin/PixelListing.h"
 #include "viewer/FrameWorker.h"
+#include "viewer/InspectionPanel.h"
 #include "viewer/Screenshot.h"
 #include "viewer/SplitView.h"
 #include "viewer/ViewerWindow.h"
@@ -134,6 +135,13 @@ std::string inspection_summary(const Inspection& in) {
                           in.explanation->against.empty() ? "" : ", each value matches " + in.explanation->against, tail);
 }
 
+// The inspector in the window (viewer/InspectionPanel.h): a short head (the stdout one is
+// too wide for it) and the same listing, or why there is none.
+void draw_inspection(DisplayImage& image, const Inspection& in) {
+  const std::string head = fmt::format("pixel ({}, {}) of {}", in.x, in.y, cell_text(in.state));
+  draw_inspection_panel(image, in.y, head, in.explanation ? twin::listing_text(in.explanation->lines) : in.note);
+}
+
 }  // namespace
 
 int run_viewer(const ViewerOptions& o) {
@@ -204,7 +212,7 @@ int run_viewer(const ViewerOptions& o) {
   // The inspector (i, a right click, --inspect): asked one at a time of the render thread.
   std::deque<InspectRequest> inspections;
   bool inspecting = false;
-  std::optional<Inspection> inspected;   // the last answer, in the title while its image is up
+  std::optional<Inspection> inspected;   // the last answer, in the title and the window while its image is up
   std::deque<std::pair<int, int>> inspect_at_start(o.inspect.begin(), o.inspect.end());
   bool quit = false;
   int status = 0;
@@ -215,6 +223,12 @@ int run_viewer(const ViewerOptions& o) {
     return title_of(state, good ? &*good : nullptr, current_problem(),
                     inspected && inspected->state.same_image(state) ? inspection_summary(*inspected) : "");
   };
+  // What the window shows: the frame, and the last inspection's panel while its image is up.
+  const auto composed_now = [&] {
+    DisplayImage image = compose(*good, state.split);
+    if (inspected && inspected->state.same_image(state)) draw_inspection(image, *inspected);
+    return image;
+  };
   const auto show = [&] {
     // The backend that drew the image on screen decides how it is presented (before the
     // first frame, the cell's): B between vulkan and gl makes the window again.
@@ -224,7 +238,7 @@ int run_viewer(const ViewerOptions& o) {
       return;
     }
     win.set_title(title_now());
-    if (good) win.show(compose(*good, state.split), current_problem().has_value());
+    if (good) win.show(composed_now(), current_problem().has_value());
     else win.show({}, current_problem().has_value());
     tell();
   };
@@ -244,7 +258,7 @@ int run_viewer(const ViewerOptions& o) {
     // the window is not at one image pixel per pixel (resized, or a resize still on its
     // way), the content at that scale instead.
     show();   // keys in the same batch (e, then c) may have changed it since the last show
-    const DisplayImage composed = compose(*good, state.split);
+    const DisplayImage composed = composed_now();
     DisplayImage shown = win.capture();
     if (shown.width != composed.width || shown.height != composed.height) {
       fmt::print(stderr, "shaderbed view: screenshot: {}: the PNG is the image as composed, not read back from the window\n",

@@ -21,6 +21,7 @@
 #include "ShellCommand.h"
 #include "TempDir.h"
 #include "ViewerSession.h"
+#include "viewer/InspectionPanel.h"
 #include "viewer/KeyMap.h"
 
 namespace shaderbed::test {
@@ -422,6 +423,62 @@ TEST(View, InspectPrintsThePixelsLinesValuesAndWhatMatchesNothing) {
   EXPECT_NE(out.find("pixel (0, 0) of 64x64 (row 0 at the top): pixel (0, 0) is not covered by the shape\n"),
             std::string::npos) << out;
   EXPECT_NE(out.find("| pixel (0, 0) is not covered by the shape\n"), std::string::npos) << out;
+}
+
+// The inspector in the window: the screenshot after an inspection is the one without it
+// but for a dark panel over the half of the image away from the pixel, with the listing's
+// text in it and the line that matches nothing in the warm colour.
+TEST(View, InspectShowsTheListingInAPanelInTheWindow) {
+  TempDir dir("view_inspect_panel");
+  std::pair<int, std::string> with, without;
+  {
+    XvfbStartLock lock;
+    with = run_shell("xvfb-run -a " + kBinary + " view " + kPlanted + " --size " + std::to_string(kSize) +
+                     " --inspect 64,32 --screenshot " + (dir / "with.png") + " 2>&1");
+  }
+  {
+    XvfbStartLock lock;
+    without = run_shell("xvfb-run -a " + kBinary + " view " + kPlanted + " --size " + std::to_string(kSize) +
+                        " --screenshot " + (dir / "without.png") + " 2>&1");
+  }
+  ASSERT_EQ(with.first, 0) << with.second;
+  ASSERT_EQ(without.first, 0) << without.second;
+  ASSERT_NE(listing_of(with.second, 64, 32).find("matches nothing"), std::string::npos) << with.second;
+  const auto png = [](const std::string& file) {
+    auto image = read_image_file(file);
+    return image ? *image : ImagePixels{};
+  };
+  const ImagePixels a = png(dir / "with.png"), b = png(dir / "without.png");
+  ASSERT_EQ(a.width, kSize);
+  ASSERT_EQ(a.height, kSize);
+  ASSERT_EQ(a.values.size(), b.values.size());
+  ASSERT_GE(a.channels, 3);
+  const auto rgb = [](const ImagePixels& image, int x, int y) {
+    const size_t at = (size_t(y) * size_t(image.width) + size_t(x)) * size_t(image.channels);
+    return viewer::Rgb{uint8_t(std::lround(image.values[at] * 255)), uint8_t(std::lround(image.values[at + 1] * 255)),
+                       uint8_t(std::lround(image.values[at + 2] * 255))};
+  };
+  // Pixel (64, 32) is in the upper half: the panel is over the lower one, which it darkens.
+  int changed_above = 0, changed_below = 0, brighter_below = 0, text = 0, warm = 0, text_without = 0;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      const viewer::Rgb p = rgb(a, x, y), q = rgb(b, x, y);
+      text_without += q == viewer::kPanelTextColour || q == viewer::kPanelDepartsColour;
+      if (y < kSize / 2) {
+        changed_above += p != q;
+        continue;
+      }
+      changed_below += p != q;
+      text += p == viewer::kPanelTextColour;
+      warm += p == viewer::kPanelDepartsColour;
+      brighter_below += p != viewer::kPanelTextColour && p != viewer::kPanelDepartsColour && p[0] > q[0] + 1;
+    }
+  EXPECT_EQ(changed_above, 0) << "the half with the inspected pixel is not covered";
+  EXPECT_GT(changed_below, kSize * kSize / 4) << "the panel darkens the lower half";
+  EXPECT_GT(text, 50) << "the listing's text";
+  EXPECT_GT(warm, 50) << "the line that matches nothing";
+  EXPECT_EQ(text_without, 0) << "no text without an inspection";
+  EXPECT_LT(brighter_below, kSize * 4) << "only the glyphs' edges are brighter than the image";
 }
 
 TEST(View, TheIKeyAndARightClickInspectThePixelUnderTheCursor) {
