@@ -46,7 +46,7 @@ struct Divergence {
   std::string value;          // the result's name
   struct Operand {
     std::string name;
-    std::string matches;      // the counterpart's label, or "constant 0.5"
+    std::string matches;      // the counterpart's label; "constant" (the name is then its value); "" none
   };
   std::vector<Operand> operands;
   struct Nearest {
