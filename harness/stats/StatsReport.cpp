@@ -1,4 +1,5 @@
 #include "stats/StatsReport.h"
+#include "core/AtomicFile.h"
 
 #include <fstream>
 #include <set>
@@ -127,9 +128,8 @@ Result<StatsReport> read_stats_json(const std::string& path) {
 }
 
 Result<void> write_text_file(const std::string& path, const std::string& text) {
-  std::ofstream out(path);
-  if (!out || !(out << text))
-    return std::unexpected(Error{.message = "cannot write file", .file = path, .stage = ErrorStage::stats});
+  if (auto ok = write_file_atomically(path, text, "the file"); !ok)
+    return std::unexpected(Error(ok.error()).in_stage(ErrorStage::stats));
   return {};
 }
 

@@ -9,6 +9,7 @@
 
 #include "report/JsonValues.h"
 #include "report/Markup.h"
+#include "core/AtomicFile.h"
 
 namespace shaderbed {
 namespace {
@@ -115,12 +116,8 @@ std::string sweep_json(const SweepResult& sweep, const std::vector<SceneChart>& 
 }
 
 Result<void> write_sweep_json(const SweepResult& sweep, const std::vector<SceneChart>& charts, const std::string& path) {
-  std::error_code ec;
-  if (const auto parent = std::filesystem::path(path).parent_path(); !parent.empty())
-    std::filesystem::create_directories(parent, ec);
-  std::ofstream f(path);
-  if (f) f << sweep_json(sweep, charts);
-  if (!f) return fail(ErrorStage::sweep, "cannot write " + path);
+  if (auto ok = write_file_atomically(path, sweep_json(sweep, charts), "the sweep's JSON"); !ok)
+    return std::unexpected(Error(ok.error()).in_stage(ErrorStage::sweep));
   return {};
 }
 

@@ -15,6 +15,7 @@
 #include "bench/BenchTable.h"
 #include "cli/commands/Command.h"
 #include "run/Runner.h"
+#include "core/AtomicFile.h"
 
 namespace shaderbed {
 namespace {
@@ -96,10 +97,8 @@ Command add_bench_command(CLI::App& app) {
             }
             fmt::print("{}", bench::bench_table(*report));
             if (!a.json.empty()) {
-              std::ofstream file(a.json);
-              file << bench::bench_json(*report);
-              if (!file) {
-                fmt::print(stderr, "shaderbed: bench: cannot write {}\n", a.json);
+              if (auto ok = write_file_atomically(a.json, bench::bench_json(*report), "the bench JSON"); !ok) {
+                fmt::print(stderr, "shaderbed: bench: {}\n", ok.error().to_string());
                 return kExitFail;
               }
             }

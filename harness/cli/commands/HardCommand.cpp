@@ -11,6 +11,7 @@
 #include "cli/commands/Command.h"
 #include "hard/HardOutput.h"
 #include "hard/HardRunner.h"
+#include "core/AtomicFile.h"
 
 namespace shaderbed {
 
@@ -50,10 +51,9 @@ Command add_hard_command(CLI::App& app) {
             }
             fmt::print("{}", hard::console_report(*report));
             if (!json_path->empty()) {
-              std::ofstream file(*json_path);
-              file << hard::json_report(*report).dump(2) << "\n";
-              if (!file) {
-                fmt::print(stderr, "shaderbed: hard: cannot write {}\n", *json_path);
+              if (auto ok = write_file_atomically(*json_path, hard::json_report(*report).dump(2) + "\n", "the hard-case JSON");
+                  !ok) {
+                fmt::print(stderr, "shaderbed: hard: {}\n", ok.error().to_string());
                 return kExitFail;
               }
             }
