@@ -18,9 +18,19 @@ int failed(const std::string& message, char* error, size_t error_size) {
   return 1;
 }
 
+// Alpha as the file stores it: OpenImageIO would premultiply it into RGB on reading (and
+// divide it out on writing), but shaders keep masks, roughness or heights in alpha and
+// must see the file's own values, as a GPU's texture upload gives them.
+OIIO::ImageSpec unassociated_alpha() {
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  return config;
+}
+
 int write(const char* path, int width, int height, int channels, int is_float, const void* pixels, char* error,
           size_t error_size) {
-  const OIIO::ImageSpec spec(width, height, channels, is_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+  OIIO::ImageSpec spec(width, height, channels, is_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+  spec.attribute("oiio:UnassociatedAlpha", 1);
   auto out = OIIO::ImageOutput::create(path);
   if (!out) return failed("no image writer: " + OIIO::geterror(), error, error_size);
   if (!out->open(path, spec) || !out->write_image(spec.format, pixels) || !out->close())
@@ -29,7 +39,8 @@ int write(const char* path, int width, int height, int channels, int is_float, c
 }
 
 int read(const char* path, int* width, int* height, int* channels, float** pixels, char* error, size_t error_size) {
-  auto in = OIIO::ImageInput::open(path);
+  const OIIO::ImageSpec config = unassociated_alpha();
+  auto in = OIIO::ImageInput::open(path, &config);
   if (!in) return failed(OIIO::geterror(), error, error_size);
   const OIIO::ImageSpec& spec = in->spec();
   const size_t count = size_t(spec.width) * spec.height * spec.nchannels;
@@ -48,7 +59,8 @@ int read(const char* path, int* width, int* height, int* channels, float** pixel
 
 int read_level(const char* path, int level, int* width, int* height, int* channels, int* levels, int* is_8bit,
                float** pixels, char* error, size_t error_size) {
-  auto in = OIIO::ImageInput::open(path);
+  const OIIO::ImageSpec config = unassociated_alpha();
+  auto in = OIIO::ImageInput::open(path, &config);
   if (!in) return failed(OIIO::geterror(), error, error_size);
   int count = 1;
   while (in->seek_subimage(0, count)) ++count;
