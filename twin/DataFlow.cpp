@@ -14,18 +14,6 @@ namespace {
 
 using Op = spv::Op;
 
-// The operands of an instruction that are ids rather than literals, for the ops whose
-// literal operands would read as ids.
-std::span<const uint32_t> id_operands(const Module& m, const Instruction& in) {
-  auto ops = value_operands(m, in);
-  switch (Op(in.op)) {
-    case Op::OpCompositeExtract: return ops.first(std::min<size_t>(1, ops.size()));
-    case Op::OpCompositeInsert:
-    case Op::OpVectorShuffle: return ops.first(std::min<size_t>(2, ops.size()));
-    default: return ops;
-  }
-}
-
 bool own_memory(uint32_t storage) {
   const auto s = spv::StorageClass(storage);
   return s == spv::StorageClass::Function || s == spv::StorageClass::Private || s == spv::StorageClass::Output;
@@ -155,7 +143,7 @@ DataFlow data_flow(const Module& m) {
         for (size_t k = 0; k + 1 < ops.size(); k += 2) definers(ops[k], inputs, 0);
         break;
       default:
-        for (uint32_t id : id_operands(m, in))
+        for (uint32_t id : value_operands(m, in))
           if (is_value(m, f, id) || arguments.contains(id)) definers(id, inputs, 0);
     }
     std::ranges::sort(inputs);

@@ -226,8 +226,9 @@ std::vector<Counterpart> counterparts_of(const ProgramTrace& original) {
   return out;
 }
 
-std::vector<int> match_values(const ProgramTrace& port, std::span<const Counterpart> counterparts) {
-  const DataFlow flow = data_flow(*port.module);
+namespace {
+
+std::vector<int> match_with(const ProgramTrace& port, std::span<const Counterpart> counterparts, const DataFlow& flow) {
   const Matcher matcher{port, counterparts, flow, ValueNames(*port.module)};
   std::vector<int> out;
   out.reserve(port.values.size());
@@ -235,12 +236,18 @@ std::vector<int> match_values(const ProgramTrace& port, std::span<const Counterp
   return out;
 }
 
+}  // namespace
+
+std::vector<int> match_values(const ProgramTrace& port, std::span<const Counterpart> counterparts) {
+  return match_with(port, counterparts, data_flow(*port.module));
+}
+
 Divergence localise_divergence(const ProgramTrace& port, std::span<const Counterpart> counterparts,
                                const std::string& against, bool trust_uniforms) {
   const Module& m = *port.module;
   const DataFlow flow = data_flow(m);
   const ValueNames names(m);
-  const std::vector<int> match = match_values(port, counterparts);
+  const std::vector<int> match = match_with(port, counterparts, flow);
   Divergence d;
   d.pixels = port.pixels.size();
   d.against = against;

@@ -2,6 +2,7 @@
 
 #include <spirv/unified1/spirv.hpp11>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -45,8 +46,21 @@ std::string operation_name(const Module& m, const Instruction& in) {
 
 std::span<const uint32_t> value_operands(const Module& m, const Instruction& in) {
   auto operands = m.operands_of(in);
-  if (spv::Op(in.op) == spv::Op::OpExtInst) return operands.size() >= 2 ? operands.subspan(2) : operands.subspan(0, 0);
-  return operands;
+  switch (spv::Op(in.op)) {
+    case spv::Op::OpExtInst: return operands.size() >= 2 ? operands.subspan(2) : operands.subspan(0, 0);
+    // Literal indices and components after the composites, which could read as ids.
+    case spv::Op::OpCompositeExtract: return operands.first(std::min<size_t>(operands.size(), 1));
+    case spv::Op::OpCompositeInsert:
+    case spv::Op::OpVectorShuffle: return operands.first(std::min<size_t>(operands.size(), 2));
+    default: return operands;
+  }
+}
+
+bool float_typed(const Module& m, uint32_t type_id) {
+  const Type* t = &m.types[type_id];
+  while (t->kind == Type::Kind::vector || t->kind == Type::Kind::matrix || t->kind == Type::Kind::array)
+    t = &m.types[t->element];
+  return t->kind == Type::Kind::floating;
 }
 
 ValueNames::ValueNames(const Module& m) : m_(m) {
@@ -90,8 +104,13 @@ std::string ValueNames::operator()(uint32_t id) const {
   if (auto it = m_.names.find(id); it != m_.names.end()) return it->second;
   if (auto it = loaded_from_.find(id); it != loaded_from_.end())
     if (std::string name = pointer_name(it->second); !name.empty()) return name;
-  if (auto it = stored_into_.find(id); it != stored_into_.end()) return m_.names.at(it->second);
+  if (std::string name = stored_as(id); !name.empty()) return name;
   return m_.name_of(id);
+}
+
+std::string ValueNames::stored_as(uint32_t id) const {
+  auto it = stored_into_.find(id);
+  return it == stored_into_.end() ? "" : m_.names.at(it->second);
 }
 
 const SourceLine& line_of(const Module& m, const Instruction& in) { return m.lines[in.line]; }

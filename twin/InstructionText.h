@@ -20,8 +20,11 @@ std::string values_text(const std::vector<double>& values);
 
 // The operation an instruction performs, for messages: "OpFDiv", "GLSL.std.450 Sqrt".
 std::string operation_name(const Module& m, const Instruction& in);
-// The instruction's operand words that are values (an OpExtInst's set and opcode skipped).
+// The instruction's operand words that may be values: an OpExtInst's set and opcode, and
+// the literal indices of a composite extract or insert or a shuffle's components, left out.
 std::span<const uint32_t> value_operands(const Module& m, const Instruction& in);
+// A float scalar, vector, matrix or array of them.
+bool float_typed(const Module& m, uint32_t type_id);
 
 // The source line an instruction carries ({"", 0} when none).
 const SourceLine& line_of(const Module& m, const Instruction& in);
@@ -33,6 +36,8 @@ class ValueNames {
  public:
   explicit ValueNames(const Module& m);
   std::string operator()(uint32_t id) const;
+  // The named variable `id` is (first) stored into; "" when none.
+  std::string stored_as(uint32_t id) const;
 
  private:
   std::string pointer_name(uint32_t pointer) const;

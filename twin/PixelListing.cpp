@@ -1,10 +1,7 @@
 #include "twin/PixelListing.h"
 
-#include <spirv/unified1/spirv.hpp11>
-
-#include <cmath>
+#include <algorithm>
 #include <map>
-#include <sstream>
 
 #include "twin/InstructionText.h"
 #include "twin/ValueOrigin.h"
@@ -14,13 +11,6 @@ namespace twin {
 std::vector<ListedLine> pixel_listing(const ProgramTrace& trace, size_t point, std::span<const Counterpart> counterparts) {
   const Module& m = *trace.module;
   const ValueNames names(m);
-  // Which named variable each value is stored into.
-  std::map<uint32_t, std::string> stored_as;
-  for (const Instruction& in : m.instructions)
-    if (spv::Op(in.op) == spv::Op::OpStore) {
-      const auto ops = m.operands_of(in);
-      if (m.names.contains(ops[0])) stored_as[ops[1]] = m.names.at(ops[0]);
-    }
   const std::vector<int> match = counterparts.empty() ? std::vector<int>(trace.values.size(), -2)
                                                       : match_values(trace, counterparts);
   std::vector<ListedLine> lines;
@@ -36,8 +26,8 @@ std::vector<ListedLine> pixel_listing(const ProgramTrace& trace, size_t point, s
     ListedLine& line = lines[it->second];
     ListedValue value{"", {v.values.begin() + std::ptrdiff_t(point * v.slots), v.values.begin() + std::ptrdiff_t((point + 1) * v.slots)},
                       match[i] >= 0 ? counterparts[size_t(match[i])].label() : "", !counterparts.empty() && match[i] == -1};
-    if (auto named = stored_as.find(in.result); named != stored_as.end()) {
-      value.name = named->second;
+    if (std::string stored = names.stored_as(in.result); !stored.empty()) {
+      value.name = std::move(stored);
       line.values.push_back(std::move(value));
     } else if (line.values.empty() || !line.values.back().name.empty()) {
       line.values.push_back(std::move(value));   // the line's last value so far

@@ -20,25 +20,6 @@ struct Event {
   std::vector<std::pair<uint32_t, std::optional<std::vector<double>>>> operands;   // id, values if known
 };
 
-bool float_typed(const Module& m, uint32_t type_id) {
-  const Type* t = &m.types[type_id];
-  while (t->kind == Type::Kind::vector || t->kind == Type::Kind::matrix || t->kind == Type::Kind::array)
-    t = &m.types[t->element];
-  return t->kind == Type::Kind::floating;
-}
-
-// The operands that are values: an OpExtInst's arguments, not the literal indices of a
-// composite extract or insert or a shuffle's components (which could read as ids).
-std::span<const uint32_t> operand_values(const Module& m, const Instruction& in) {
-  const auto all = value_operands(m, in);
-  switch (spv::Op(in.op)) {
-    case spv::Op::OpCompositeExtract: return all.first(std::min<size_t>(all.size(), 1));
-    case spv::Op::OpCompositeInsert:
-    case spv::Op::OpVectorShuffle: return all.first(std::min<size_t>(all.size(), 2));
-    default: return all;
-  }
-}
-
 class Recorder final : public Observer {
  public:
   explicit Recorder(const Module& m) : m_(m) {}
@@ -46,7 +27,7 @@ class Recorder final : public Observer {
     const Instruction& in = m_.instructions[index];
     if (float_typed(m_, in.result_type)) {
       Event e{.index = index, .occurrence = occurrences_[index]++, .values = {values.begin(), values.end()}, .operands = {}};
-      for (uint32_t id : operand_values(m_, in)) {
+      for (uint32_t id : value_operands(m_, in)) {
         if (id == 0 || id >= m_.bound) continue;
         std::optional<std::vector<double>> v;
         if (m_.is_constant[id]) v = m_.constants[id];

@@ -21,11 +21,7 @@ class NonFiniteSearch final : public Observer {
     const Instruction& in = m_.instructions[index];
     seen_[in.result].assign(values.begin(), values.end());
     if (found_) return;
-    // A float scalar, vector, matrix or array of them: what can hold a NaN.
-    const Type* t = &m_.types[in.result_type];
-    while (t->kind == Type::Kind::vector || t->kind == Type::Kind::matrix || t->kind == Type::Kind::array)
-      t = &m_.types[t->element];
-    if (t->kind != Type::Kind::floating) return;
+    if (!float_typed(m_, in.result_type)) return;   // what can hold a NaN
     for (double v : values)
       if (!std::isfinite(v)) {
         found_ = index;

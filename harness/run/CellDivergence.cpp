@@ -85,8 +85,7 @@ void add_excerpts(CellResult::Divergence& r, const twin::Module& port, const twi
   if (!file.empty()) r.original_source = excerpt(*original, file, line);
 }
 
-}  // namespace
-
+// The report's form of what twin/ found.
 CellResult::Divergence divergence_result(const twin::Divergence& d) {
   CellResult::Divergence r;
   using Kind = twin::Divergence::Kind;
@@ -110,6 +109,9 @@ CellResult::Divergence divergence_result(const twin::Divergence& d) {
   return r;
 }
 
+}  // namespace
+
+
 Result<void> CellDivergence::draw_twins(GroupDrawer& drawer, const CellGroup& group, const PlannedCell& cell,
                                         const CellResult& row) {
   CellResult scratch = row;
@@ -124,14 +126,19 @@ Result<void> CellDivergence::draw_twins(GroupDrawer& drawer, const CellGroup& gr
   return {};
 }
 
-CellResult::Divergence CellDivergence::locate(GroupDrawer& drawer, const CellGroup& group, const PlannedCell& cell,
-                                              const CellResult& row, std::span<const twin::PixelAt> pixels,
-                                              std::span<const twin::Counterpart> model) {
+std::optional<CellResult::Divergence> CellDivergence::locate(GroupDrawer& drawer, const CellGroup& group,
+                                                             const PlannedCell& cell, const CellResult& row,
+                                                             const Image& render, const ReferenceImage& image,
+                                                             const std::vector<PixelClass>& classes,
+                                                             const CellReference& reference) {
   const auto key = std::pair{group.variant, cell.language};
   if (auto it = found_.find(key); it != found_.end()) return it->second;
-  CellResult::Divergence& result = found_[key];
+  std::optional<CellResult::Divergence>& found = found_[key];
   const bool differential = group.reference_cell && group.reference_variant;
-  if (!differential && model.empty()) return result = error_result("the reference shows no values to match against");
+  const std::vector<twin::PixelAt> pixels = divergence_pixels(render, image, classes);
+  const std::vector<twin::Counterpart> model = differential ? std::vector<twin::Counterpart>{} : reference.quantities(pixels);
+  if (!differential && model.empty()) return found;   // nothing to match against
+  CellResult::Divergence& result = found.emplace();
   if (pixels.empty()) return result = error_result("no interior pixel to trace");
   if (auto drawn = draw_twins(drawer, group, cell, row); !drawn) return result = error_result(drawn.error().message);
   auto port_trace = twin::trace_program(*port_->last_input(), pixels);

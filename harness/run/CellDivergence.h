@@ -40,12 +40,14 @@ class CellDivergence {
  public:
   CellDivergence();
   void begin_group() { found_.clear(); }
-  // Failing cell `row` at `pixels`: against the group's original when it has one, else
-  // against `model`, the reference's named quantities at the same pixels
-  // (CellReference::quantities); an error when there is neither.
-  CellResult::Divergence locate(GroupDrawer& drawer, const CellGroup& group, const PlannedCell& cell,
-                                const CellResult& row, std::span<const twin::PixelAt> pixels,
-                                std::span<const twin::Counterpart> model = {});
+  // Failing cell `row` (its `render` judged against `image`, classified as `classes`),
+  // traced at divergence_pixels: against the group's original when it has one, else
+  // against the reference's named quantities (CellReference::quantities); nothing when it
+  // shows none (a per-vertex model). Found once per variant and language: the pixels and
+  // quantities are only asked for then.
+  std::optional<CellResult::Divergence> locate(GroupDrawer& drawer, const CellGroup& group, const PlannedCell& cell,
+                                               const CellResult& row, const Image& render, const ReferenceImage& image,
+                                               const std::vector<PixelClass>& classes, const CellReference& reference);
   // Pixel (x, y) of cell `row`'s shader, by its double twin, with the original's matches
   // when the group has one, else the model's (`model` at `context`, x and y first: pixel
   // (x, y) must be context[0] then), matched over `context` as well as this pixel.
@@ -65,10 +67,7 @@ class CellDivergence {
 
   BackendSlot port_slot_, original_slot_;   // two twins: both draws stay traceable
   TwinRenderer *port_ = nullptr, *original_ = nullptr;
-  std::map<std::pair<const Variant*, Language>, CellResult::Divergence> found_;
+  std::map<std::pair<const Variant*, Language>, std::optional<CellResult::Divergence>> found_;
 };
-
-// The report's form of what twin/ found.
-CellResult::Divergence divergence_result(const twin::Divergence& d);
 
 }  // namespace shaderbed

@@ -278,14 +278,9 @@ struct GroupRunner::Impl final : GroupDrawer {
         explain_cell(images[i], *group_image, classes_, evidence, r);
         // Where the shader departs from its original, or from the model's quantities.
         if (!r.reference.is_reference) {
-          const std::vector<twin::PixelAt> pixels = divergence_pixels(images[i], *group_image, classes_);
-          const std::vector<twin::Counterpart> model = c.reference_render ? std::vector<twin::Counterpart>{}
-                                                                          : reference.quantities(pixels);
-          if (c.reference_render || !model.empty()) {
-            const auto t0 = Clock::now();
-            r.divergence = divergences_.locate(*this, g, g.cells[rendered[i]], r, pixels, model);
-            r.time_ms["divergence"] = ms_since(t0);   // the first cell of a variant and language pays it
-          }
+          const auto t0 = Clock::now();
+          r.divergence = divergences_.locate(*this, g, g.cells[rendered[i]], r, images[i], *group_image, classes_, reference);
+          if (r.divergence) r.time_ms["divergence"] = ms_since(t0);   // the first cell of a variant and language pays it
         }
       } else {
         const ReferenceImage& own = own_references.at(rendered[i]);
@@ -539,7 +534,7 @@ struct GroupRunner::Impl final : GroupDrawer {
     const ReferenceImage* against = group_image && *group_image ? &**group_image : nullptr;
     if (!against && reference)
       if (auto image_of = reference->cell_image(r)) own = std::move(*image_of), against = &*own;
-    if (against) context = divergence_pixels(image, *against, classify_pixels(*against));
+    if (against) context = divergence_pixels(image, *against, own ? classify_pixels(*own) : classes_);
     std::optional<twin::PixelAt> pixel = explain_->second;
     if (!pixel && !context.empty()) pixel = context.front();
     if (!pixel) {
