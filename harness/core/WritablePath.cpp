@@ -27,4 +27,22 @@ Result<void> check_writable_file(const std::string& path, const std::string& wha
   return check_writable_folder(parent.empty() ? "." : parent.string(), what);
 }
 
+bool same_file(const std::string& a, const std::string& b) {
+  std::error_code ec;
+  if (fs::exists(a, ec) && fs::exists(b, ec)) return fs::equivalent(a, b, ec);
+  const fs::path ca = fs::weakly_canonical(fs::absolute(a, ec), ec), cb = fs::weakly_canonical(fs::absolute(b, ec), ec);
+  return ca == cb;
+}
+
+Result<void> check_not_an_input(const std::string& output, const std::string& what,
+                                const std::vector<std::string>& inputs) {
+  for (const std::string& input : inputs)
+    if (!input.empty() && same_file(output, input))
+      return std::unexpected(Error{.message = what + ": '" + output + "' is " +
+                                              (output == input ? "one of the inputs" : "the input '" + input + "'") +
+                                              "; writing it would destroy it (choose another path)",
+                                   .stage = ErrorStage::options});
+  return {};
+}
+
 }  // namespace shaderbed

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "backends/Backend.h"
@@ -71,6 +72,9 @@ struct RunOptions {
   CellSettings cell;
   WorkerSupervision workers;
   std::string expectations;   // known-failures TOML file, "" = none
+  // The report files the command will write after the run (path, option): refused before
+  // anything is drawn when one is an input of the run (a case, shader or texture file).
+  std::vector<std::pair<std::string, std::string>> report_files;
   // Progress; called from the worker threads, one call at a time.
   std::function<void(size_t done, size_t total, const CellResult&)> on_cell;
   StepObserver on_step;

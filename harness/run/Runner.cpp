@@ -20,6 +20,7 @@
 #include "core/ClosestName.h"
 #include "core/Elapsed.h"
 #include "core/Fnv1a.h"
+#include "core/WritablePath.h"
 #include "prt/ShCase.h"
 #include "run/CaseUniforms.h"
 #include "run/ReferenceKinds.h"
@@ -58,6 +59,30 @@ Result<void> check_shader_files(const std::vector<CellGroup>& groups) {
       if (auto ok = check(*g.reference_variant, g.reference_cell->language); !ok) return ok;
   }
   return {};
+}
+
+// Every file the planned cells read: their case files, the shaders of every language of
+// their variants and originals, their textures, and the expectations.
+std::vector<std::string> run_inputs(const SuitePlan& plan, const RunOptions& o) {
+  std::vector<std::string> inputs{o.expectations};
+  const auto add_variant = [&](const Variant* v) {
+    if (!v) return;
+    for (const auto& [language, files] : v->shaders) inputs.insert(inputs.end(), {files.vertex, files.fragment});
+  };
+  const auto add_textures = [&](const std::map<std::string, TextureBinding>& table) {
+    for (const auto& [name, binding] : table) inputs.insert(inputs.end(), binding.files.begin(), binding.files.end());
+  };
+  for (const Case& c : plan.cases) {
+    inputs.push_back(c.path);
+    if (c.sh) inputs.push_back(c.sh->probe);
+    add_textures(c.textures.common);
+    for (const auto& [language, table] : c.textures.per_language) add_textures(table);
+  }
+  for (const CellGroup& g : plan.groups) {
+    add_variant(g.variant);
+    add_variant(g.reference_variant);
+  }
+  return inputs;
 }
 
 // Reads the selected case files, applies --param overrides and checks every name filter.
@@ -243,6 +268,9 @@ Result<RunReport> run_suite(const RunOptions& o) {
   // The viewer plans a whole case and draws one language of it: only a run refuses a
   // selected cell's missing shader up front.
   if (auto ok = check_shader_files((*plan)->groups); !ok) return std::unexpected(ok.error());
+  const std::vector<std::string> inputs = run_inputs(**plan, o);
+  for (const auto& [path, option] : o.report_files)
+    if (auto ok = check_not_an_input(path, option, inputs); !ok) return std::unexpected(ok.error());
 
   RunReport report;
   report.run_id = run_identity(o);

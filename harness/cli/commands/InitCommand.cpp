@@ -81,6 +81,8 @@ int run_init(const InitArguments& args) {
                                                         : fs::path(args.out))
                               .lexically_normal()
                               .string();
+  // Not even --force writes over a shader given to read (`init x.toml` names its case x.toml).
+  if (auto ok = check_not_an_input(out, "--out", args.shaders); !ok) return bad_input(ok.error().to_string());
   std::error_code ec;
   if (fs::exists(out, ec) && !args.force)
     return bad_input(out + " exists; init does not overwrite a case file (--force rewrites it)");

@@ -95,6 +95,7 @@ Command add_port_command(CLI::App& app) {
             std::fflush(stdout);
 
             RunOptions options = args->run;
+            options.report_files = args->outputs.files();
             options.select.cases_dir = plan->out_dir;
             options.select.cases = plan->case_paths;
             options.workers.worker_binary = this_executable().string();   // isolated, as `run`

@@ -64,6 +64,14 @@ bool ReportOutputs::check_writable() const {
   return true;
 }
 
+std::vector<std::pair<std::string, std::string>> ReportOutputs::files() const {
+  std::vector<std::pair<std::string, std::string>> written;
+  if (!json.empty()) written.emplace_back(json, "--json");
+  if (!junit.empty()) written.emplace_back(junit, "--junit");
+  if (!html.empty()) written.emplace_back((std::filesystem::path(html) / "index.html").string(), "--html");
+  return written;
+}
+
 bool ReportOutputs::write(const RunReport& report) const {
   auto done = [](const Result<void>& ok, const char* what, const std::string& path) {
     if (!ok) {

@@ -1,6 +1,7 @@
 #pragma once
 // The report files `run` and `merge` both write: --json, --junit, --html.
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -25,6 +26,9 @@ struct ReportOutputs {
   bool load_charts();
   // Checks every output path can be written, before any work; false after printing why.
   bool check_writable() const;
+  // The files write() will write, with their options, for the run to refuse one that is
+  // an input: (path, "--json"), ...
+  std::vector<std::pair<std::string, std::string>> files() const;
   // Writes what was asked for; prints where; false (after printing the error) on failure.
   bool write(const RunReport& report) const;
 };

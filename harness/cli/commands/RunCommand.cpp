@@ -106,6 +106,7 @@ Command add_run_command(CLI::App& app) {
                 }
             ConsoleProgress progress(stderr, isatty(STDERR_FILENO), args->console.view == ConsoleView::quiet);
             RunOptions options = args->options;
+            options.report_files = args->outputs.files();
             if (!args->in_process) options.workers.worker_binary = this_executable().string();
             options.on_cell = [&](size_t done, size_t total, const CellResult& cell) {
               progress.update(done, total, cell);
