@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <mutex>
 
+#include "core/AtomicFile.h"
 #include "core/ThisExecutable.h"
 #include "imageio/ModuleAbi.h"
 
@@ -42,11 +43,11 @@ const LoadedModule& image_module() {
       }
       // Never dlclosed: OpenImageIO keeps threads and plugins of its own.
       using Entry = const ShaderbedImageIo* (*)();
-      if (auto entry = reinterpret_cast<Entry>(::dlsym(handle, "shaderbed_image_io_v2"))) {
+      if (auto entry = reinterpret_cast<Entry>(::dlsym(handle, "shaderbed_image_io_v3"))) {
         loaded.table = entry();
         return;
       }
-      tried += std::string(tried.empty() ? "" : "; ") + candidate.string() + " has no shaderbed_image_io_v2";
+      tried += std::string(tried.empty() ? "" : "; ") + candidate.string() + " has no shaderbed_image_io_v3";
     }
     loaded.error = "cannot load the image I/O module " + std::string(kModuleName) + ": " + tried;
   });
@@ -63,24 +64,18 @@ Result<void> write_image_file(const std::string& path, int width, int height, in
                               const void* pixels) {
   const LoadedModule& module = image_module();
   if (!module.table) return std::unexpected(image_error(module.error, path));
-  std::error_code ec;
-  fs::create_directories(fs::path(path).parent_path(), ec);
-  // Written beside its name and renamed over it: a killed run, or two runs writing the
-  // same --out, never leave half an image (the extension stays last: it picks the format).
-  const fs::path target(path);
-  const fs::path partial =
-      target.parent_path() / (target.stem().string() + ".partial-" + std::to_string(::getpid()) + target.extension().string());
   std::array<char, 1024> error{};
-  if (module.table->write(partial.c_str(), width, height, channels, type == PixelType::float32, pixels, error.data(),
-                          error.size()) != 0) {
-    fs::remove(partial, ec);
+  unsigned char* bytes = nullptr;
+  size_t size = 0;
+  if (module.table->encode(path.c_str(), width, height, channels, type == PixelType::float32, pixels, &bytes, &size,
+                           error.data(), error.size()) != 0)
     return std::unexpected(image_error(error.data(), path));
-  }
-  fs::rename(partial, target, ec);
-  if (ec) {
-    fs::remove(partial, ec);
-    return std::unexpected(image_error("cannot move the image into place: " + ec.message(), path));
-  }
+  // Every write checked and flushed (a full disk is an error, not a short file), through
+  // an exclusively created temporary renamed into place: a killed run, or two runs
+  // writing the same --out, never leave half an image.
+  auto written = write_file_atomically(path, std::string_view(reinterpret_cast<const char*>(bytes), size), "image");
+  module.table->free_bytes(bytes);
+  if (!written) return std::unexpected(image_error(written.error().message, path));
   return {};
 }
 

@@ -8,8 +8,11 @@ extern "C" {
 
 struct ShaderbedImageIo {
   // 0 on success; else the message in error[error_size].
-  int (*write)(const char* path, int width, int height, int channels, int is_float, const void* pixels, char* error,
-               size_t error_size);
+  // v3: the image encoded in memory in the format `name`'s extension picks; *bytes is
+  // malloc'd *size bytes, freed with free_bytes.
+  int (*encode)(const char* name, int width, int height, int channels, int is_float, const void* pixels,
+                unsigned char** bytes, size_t* size, char* error, size_t error_size);
+  void (*free_bytes)(unsigned char* bytes);
   // On success *pixels is malloc'd width * height * channels floats, freed with free_pixels.
   int (*read)(const char* path, int* width, int* height, int* channels, float** pixels, char* error,
               size_t error_size);
@@ -21,5 +24,5 @@ struct ShaderbedImageIo {
 };
 
 // The module's one exported symbol.
-const ShaderbedImageIo* shaderbed_image_io_v2();
+const ShaderbedImageIo* shaderbed_image_io_v3();
 }

@@ -12,6 +12,7 @@
 
 #include "plot/Gnuplot.h"
 #include "plot/ParetoFront.h"
+#include "core/AtomicFile.h"
 #include "core/ScratchDirectory.h"
 
 namespace shaderbed {
@@ -236,11 +237,10 @@ Result<ChartFiles> write_speed_error_chart(const std::vector<ChartPoint>& points
       return fail(ErrorStage::plot, fmt::format("gnuplot exited cleanly but wrote no {}", p.filename().string()));
 
   ChartFiles files{out_stem + ".png", out_stem + ".svg"};
-  std::error_code ec;
-  if (const fs::path parent = fs::path(out_stem).parent_path(); !parent.empty()) fs::create_directories(parent, ec);
-  fs::copy_file(png, files.png, fs::copy_options::overwrite_existing, ec);
-  if (ec) return std::unexpected(Error{.message = "cannot write the chart: " + ec.message(), .file = files.png, .stage = ErrorStage::plot});
-  if (auto ok = write_text(files.svg, inlinable_svg(read_all(svg), name, spec.title)); !ok) return std::unexpected(ok.error());
+  // Checked, flushed writes (a full disk is an error, not a short chart), renamed into place.
+  if (auto ok = write_file_atomically(files.png, read_all(png), "chart"); !ok) return std::unexpected(ok.error());
+  if (auto ok = write_file_atomically(files.svg, inlinable_svg(read_all(svg), name, spec.title), "chart"); !ok)
+    return std::unexpected(ok.error());
   return files;
 }
 

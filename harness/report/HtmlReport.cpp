@@ -87,7 +87,7 @@ class Writer {
       return std::unexpected(Error{.message = "cannot create the HTML report folder: " + ec.message(),
                                    .file = dir_.string(), .stage = ErrorStage::report});
     index_groups();
-    if (auto ok = copy_sources(); !ok) return std::unexpected(ok.error());
+    copy_sources();
     // The page without images (every image as a file link, a little longer than a store
     // key) bounds the markup; images get what is left of max_page_bytes.
     const size_t markup = page().size();
@@ -181,8 +181,9 @@ class Writer {
   }
 
   // Copies each distinct source text into DIR/sources/, mirroring its place under the run's
-  // folder (else sources/other/HASH/NAME), with .txt appended so browsers display it.
-  Result<void> copy_sources() {
+  // folder (else sources/other/HASH/NAME), with .txt appended so browsers display it. A
+  // copy that fails (a full disk) costs that link, never the page.
+  void copy_sources() {
     for (const CellResult& r : report_.results) {
       const CellArtefacts& a = r.artefacts;
       for (const std::string* p : {&a.vertex_spirv, &a.fragment_spirv, &a.vertex_cross_glsl, &a.fragment_cross_glsl}) {
@@ -203,14 +204,16 @@ class Writer {
         rel = fs::path("sources") / (rel.string() + ".txt");
         fs::create_directories((dir_ / rel).parent_path(), ec);
         fs::copy_file(file, dir_ / rel, fs::copy_options::overwrite_existing, ec);
-        if (ec)
-          return std::unexpected(Error{.message = "cannot copy a shader source into the report: " + ec.message(),
-                                       .file = file, .stage = ErrorStage::report});
+        if (ec) {
+          fs::remove(dir_ / rel, ec);   // copy_file leaves what it managed to write
+          sources_[*p] = "";
+          ++summary_.sources_not_copied;
+          continue;
+        }
         sources_[*p] = url_path(rel.generic_string());
         ++summary_.sources_copied;
       }
     }
-    return {};
   }
 
   // ---- markup ----
@@ -572,8 +575,11 @@ class Writer {
     h += fmt::format(
         "<p class=\"policy\">Images: {} embedded ({:.1f} MB), {} linked to the run's files, {} missing. Embedded first: "
         "failing cells, one passing example per case/variant, other renders of failing shapes, then the rest while the budget lasts. Error heat maps show the "
-        "interior threshold as mid grey. Click a table header to sort, a row for details, an image to zoom.</p>\n",
-        summary_.images_embedded, summary_.image_bytes / 1048576.0, summary_.images_linked, summary_.images_missing);
+        "interior threshold as mid grey. Click a table header to sort, a row for details, an image to zoom.{}</p>\n",
+        summary_.images_embedded, summary_.image_bytes / 1048576.0, summary_.images_linked, summary_.images_missing,
+        summary_.sources_not_copied ? fmt::format(" {} shader source{} could not be copied into the report (no link).",
+                                                  summary_.sources_not_copied, summary_.sources_not_copied == 1 ? "" : "s")
+                                    : "");
     std::string nav;
     for (const auto& [k, title] : {std::pair{"fail", "failures"}, std::pair{"error", "errors"}, std::pair{"known", "known failures"},
                                   std::pair{"skipped", "skipped"}}) {

@@ -70,6 +70,7 @@ struct HtmlSummary {
   size_t images_linked = 0;                     // present but over the budget: relative file path
   size_t images_missing = 0;
   size_t sources_copied = 0;
+  size_t sources_not_copied = 0;                // a copy failed (a full disk): shown without a link
 };
 
 Result<void> write_html(const RunReport& report, const std::string& dir);

@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "backends/Backend.h"
 #include "compare/Attribution.h"
@@ -115,7 +116,9 @@ struct GroupRunner::Impl final : GroupDrawer {
     const Mesh& mesh = additions_ && additions_->mesh ? *additions_->mesh : shape;
     const ReferenceSource source = reference->source();
     const Result<ReferenceImage>* group_image = reference->group_image();
-    if (group_image && *group_image && !dir.empty()) (void)write_reference(**group_image, dir / "reference");
+    group_reference_written_ = group_image && *group_image && !dir.empty()
+                                   ? write_reference(**group_image, dir / "reference")
+                                   : Result<void>{};
     classes_ = group_image && *group_image ? classify_pixels(**group_image) : std::vector<PixelClass>{};
 
     std::vector<CellResult> results;
@@ -490,16 +493,31 @@ struct GroupRunner::Impl final : GroupDrawer {
     r.artefacts.error_png = (dir / (stem + ".error.png")).string();
     r.artefacts.reference_png = (dir / "reference.png").string();
     const auto io_start = Clock::now();
+    // An image that cannot be written (a full disk) costs the image, never the verdict:
+    // the cell keeps its status and says what was lost.
+    std::vector<std::string> lost;
+    std::string why;
+    const auto keep = [&](const Result<void>& written, std::string& path) {
+      if (written) return;
+      lost.push_back(fs::path(path).filename().string());
+      why = written.error().message;
+      path.clear();
+    };
     if (own_reference) {
       r.artefacts.reference_png = (dir / (stem + ".reference.png")).string();
-      if (auto ok = write_reference(reference, dir / (stem + ".reference")); !ok) return ok;
+      keep(write_reference(reference, dir / (stem + ".reference")), r.artefacts.reference_png);
+    } else {
+      keep(group_reference_written_, r.artefacts.reference_png);
     }
-    for (auto written : {write_exr(r.artefacts.render_exr, scene_.width, scene_.height, image.rgba),
-                         write_png(r.artefacts.render_png, image),
-                         write_exr(r.artefacts.error_exr, scene_.width, scene_.height, cmp.error.rgba),
-                         // Error heat map: the interior tolerance shows as mid grey.
-                         write_png(r.artefacts.error_png, cmp.error, float(0.5 / std::max(r.interior_threshold, 1e-12)))})
-      if (!written) return written;
+    keep(write_exr(r.artefacts.render_exr, scene_.width, scene_.height, image.rgba), r.artefacts.render_exr);
+    keep(write_png(r.artefacts.render_png, image), r.artefacts.render_png);
+    keep(write_exr(r.artefacts.error_exr, scene_.width, scene_.height, cmp.error.rgba), r.artefacts.error_exr);
+    // Error heat map: the interior tolerance shows as mid grey.
+    keep(write_png(r.artefacts.error_png, cmp.error, float(0.5 / std::max(r.interior_threshold, 1e-12))),
+         r.artefacts.error_png);
+    if (!lost.empty())
+      r.warnings.push_back(fmt::format("{} image{} not written ({}; the verdict stands): {}", lost.size(),
+                                       lost.size() == 1 ? "" : "s", why, fmt::join(lost, ", ")));
     r.time_ms["io"] = ms_since(io_start);
     return {};
   }
@@ -513,6 +531,7 @@ struct GroupRunner::Impl final : GroupDrawer {
   std::map<std::string, double> areas_;             // shape/tessellation: projected pixels
   std::map<std::string, Result<Texture>> luts_;     // case/variant
   std::map<std::string, std::vector<std::string>> other_sources_;   // by case/variant/language
+  Result<void> group_reference_written_;            // the group's reference.png, when it has one
   // The current group's.
   const CellGroup* group_ = nullptr;
   const Mesh* shape_ = nullptr;

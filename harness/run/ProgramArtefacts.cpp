@@ -1,9 +1,9 @@
 #include "run/ProgramArtefacts.h"
 
+#include "core/AtomicFile.h"
 #include "core/Fnv1a.h"
 
 #include <filesystem>
-#include <fstream>
 
 #include <fmt/format.h>
 
@@ -12,11 +12,9 @@
 namespace shaderbed {
 namespace {
 
+// Checked and flushed like every artefact (core/AtomicFile.h): a full disk is an error.
 Result<void> write_text(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  if (!out) return std::unexpected(Error{.message = "cannot write", .file = path, .stage = ErrorStage::report});
-  return {};
+  return write_file_atomically(path, text, "SPIR-V listing");
 }
 
 }  // namespace
@@ -27,19 +25,20 @@ Result<void> write_program_artefacts(const std::string& dir, const CompiledProgr
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   const std::string stem = (std::filesystem::path(dir) / to_string(p.language)).string();
-  out.vertex_spirv = stem + ".vert.spvasm";
-  out.fragment_spirv = stem + ".frag.spvasm";
-  for (auto written : {write_text(out.vertex_spirv, disassemble(p.vertex.spirv)),
-                       write_text(out.fragment_spirv, disassemble(p.fragment.spirv))})
-    if (!written) return written;
+  // A listing that could not be written is not named: no report links a missing file.
+  Result<void> all;
+  const auto put = [&all](std::string& field, const std::string& path, const std::string& text) {
+    const Result<void> written = write_text(path, text);
+    field = written ? path : "";
+    if (!written && all) all = written;
+  };
+  put(out.vertex_spirv, stem + ".vert.spvasm", disassemble(p.vertex.spirv));
+  put(out.fragment_spirv, stem + ".frag.spvasm", disassemble(p.fragment.spirv));
   // A Vulkan-only run compiles no GL target, so there is no SPIRV-Cross GLSL to show.
-  if (p.vertex_cross_glsl.empty()) return {};
-  out.vertex_cross_glsl = stem + ".vert.cross.glsl";
-  out.fragment_cross_glsl = stem + ".frag.cross.glsl";
-  for (auto written : {write_text(out.vertex_cross_glsl, p.vertex_cross_glsl),
-                       write_text(out.fragment_cross_glsl, p.fragment_cross_glsl)})
-    if (!written) return written;
-  return {};
+  if (p.vertex_cross_glsl.empty()) return all;
+  put(out.vertex_cross_glsl, stem + ".vert.cross.glsl", p.vertex_cross_glsl);
+  put(out.fragment_cross_glsl, stem + ".frag.cross.glsl", p.fragment_cross_glsl);
+  return all;
 }
 
 }  // namespace shaderbed

@@ -1,6 +1,10 @@
 // The OpenImageIO side of image I/O, built as a module that shaderbed dlopens on the first
 // image read or write (ImageIoModule.h says why).
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <vector>
 
 #include <cstdlib>
 #include <cstring>
@@ -27,16 +31,27 @@ OIIO::ImageSpec unassociated_alpha() {
   return config;
 }
 
-int write(const char* path, int width, int height, int channels, int is_float, const void* pixels, char* error,
-          size_t error_size) {
+// Encoded in memory, for shaderbed to write with checked writes: OpenImageIO's own file
+// writers report success when the disk fills (a 0-byte PNG or a short EXR).
+int encode(const char* name, int width, int height, int channels, int is_float, const void* pixels,
+           unsigned char** bytes, size_t* size, char* error, size_t error_size) {
   OIIO::ImageSpec spec(width, height, channels, is_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
   spec.attribute("oiio:UnassociatedAlpha", 1);
-  auto out = OIIO::ImageOutput::create(path);
+  auto out = OIIO::ImageOutput::create(name);
   if (!out) return failed("no image writer: " + OIIO::geterror(), error, error_size);
-  if (!out->open(path, spec) || !out->write_image(spec.format, pixels) || !out->close())
+  if (!out->supports("ioproxy")) return failed(std::string(out->format_name()) + " cannot be encoded in memory", error, error_size);
+  OIIO::Filesystem::IOVecOutput memory;
+  if (!out->set_ioproxy(&memory) || !out->open(name, spec) || !out->write_image(spec.format, pixels) || !out->close())
     return failed(out->geterror(), error, error_size);
+  const std::vector<unsigned char>& encoded = memory.buffer();
+  *bytes = static_cast<unsigned char*>(std::malloc(std::max<size_t>(encoded.size(), 1)));
+  if (!*bytes) return failed("out of memory", error, error_size);
+  std::memcpy(*bytes, encoded.data(), encoded.size());
+  *size = encoded.size();
   return 0;
 }
+
+void free_bytes(unsigned char* bytes) { std::free(bytes); }
 
 int read(const char* path, int* width, int* height, int* channels, float** pixels, char* error, size_t error_size) {
   const OIIO::ImageSpec config = unassociated_alpha();
@@ -87,8 +102,8 @@ int read_level(const char* path, int level, int* width, int* height, int* channe
 
 void free_pixels(float* pixels) { std::free(pixels); }
 
-const ShaderbedImageIo kTable{write, read, free_pixels, read_level};
+const ShaderbedImageIo kTable{encode, free_bytes, read, free_pixels, read_level};
 
 }  // namespace
 
-extern "C" __attribute__((visibility("default"))) const ShaderbedImageIo* shaderbed_image_io_v2() { return &kTable; }
+extern "C" __attribute__((visibility("default"))) const ShaderbedImageIo* shaderbed_image_io_v3() { return &kTable; }

@@ -1,0 +1,94 @@
+#!/usr/bin/env python3
+"""A run whose --out fills up keeps every verdict and says what it lost (issue 30, item 4).
+
+--out and --html go to a 1 MiB tmpfs (mounted here when this runs as root and may mount;
+else each file is capped with RLIMIT_FSIZE, the same ENOSPC-like failure for every write
+past the cap). The JSON goes to a normal disk. Checked: the run finishes with its summary
+and a JSON of every cell, no cell becomes an error for want of space, every cell that lost
+an image says so in its warnings and names no artefact that is missing, and no image, JSON
+or HTML file is left empty or cut short at its final name.
+
+usage: full_disk.py SOURCE_DIR SHADERBED [--size N] [--cases a,b]
+"""
+import argparse
+import json
+import os
+import resource
+import signal
+import subprocess
+import sys
+import tempfile
+
+
+def mount_small_tmpfs(path):
+    if os.geteuid() != 0:
+        return False
+    r = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=1m", "tmpfs", path], capture_output=True)
+    return r.returncode == 0
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("source")
+    ap.add_argument("shaderbed")
+    ap.add_argument("--size", default="64")
+    ap.add_argument("--cases", default="lambert")
+    a = ap.parse_args()
+    with tempfile.TemporaryDirectory(prefix="shaderbed_full_disk_") as tmp:
+        full = os.path.join(tmp, "full")
+        os.mkdir(full)
+        mounted = mount_small_tmpfs(full)
+
+        def cap_file_size():
+            # Writes past 64 KiB fail with EFBIG (SIGXFSZ ignored, as the workers inherit it).
+            signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+            resource.setrlimit(resource.RLIMIT_FSIZE, (64 << 10, 64 << 10))
+
+        results = os.path.join(tmp, "results.json")
+        try:
+            cmd = [a.shaderbed, "run", "--case", a.cases, "--size", a.size, "--repeat", "0", "-q",
+                   "--out", os.path.join(full, "out"), "--html", os.path.join(full, "html"), "--json", results]
+            run = subprocess.run(cmd, capture_output=True, text=True, timeout=600,
+                                 preexec_fn=None if mounted else cap_file_size)
+            out = run.stdout + run.stderr
+            print(f"{'1 MiB tmpfs' if mounted else 'RLIMIT_FSIZE 64 KiB'}: exit {run.returncode}")
+            problems = []
+            if " cells: " not in out:
+                problems.append("no summary line")
+            if not os.path.exists(results):
+                problems.append("no JSON")
+                report = {"results": []}
+            else:
+                with open(results) as f:
+                    report = json.load(f)
+            cells = report["results"]
+            lost = [c for c in cells if any("not written" in w for w in c.get("warnings", []))]
+            errors = [c for c in cells if c["status"] == "error"]
+            if errors:
+                problems.append(f"{len(errors)} cells became errors: {errors[0].get('message', '')}")
+            if not lost:
+                problems.append("no cell says an image was lost (the disk did not fill?)")
+            for c in cells:
+                for key, path in c.get("artefacts", {}).items():
+                    if path and (not os.path.exists(path) or os.path.getsize(path) == 0):
+                        problems.append(f"{c['id']}: artefact {key} names {path}, which is "
+                                        "missing or empty")
+                        break
+            empty = []
+            for root, _, files in os.walk(full):
+                empty += [os.path.join(root, f) for f in files if os.path.getsize(os.path.join(root, f)) == 0]
+            if empty:
+                problems.append(f"{len(empty)} empty files at their final names, e.g. {empty[0]}")
+            print(f"{len(cells)} cells, {len(lost)} say what they lost, {len(errors)} errors")
+            for p in problems[:10]:
+                print("FAIL:", p)
+            if problems:
+                print(out[-3000:])
+            return 1 if problems else 0
+        finally:
+            if mounted:
+                subprocess.run(["umount", full])
+
+
+if __name__ == "__main__":
+    sys.exit(main())
