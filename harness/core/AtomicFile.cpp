@@ -22,7 +22,9 @@ Result<void> write_file_atomically(const std::string& path, std::string_view byt
   // A new file of an unguessable name in the target's folder, created exclusively (mkstemp:
   // O_CREAT | O_EXCL), so nothing planted there is followed or overwritten; renamed over the
   // target, which replaces a symlink at the target rather than the file it points to.
-  std::string name = (target.parent_path() / ("." + target.filename().string() + ".tmp.XXXXXX")).string();
+  // A name near NAME_MAX has no room for the suffix: its temporary goes by a short one.
+  const std::string stem = target.filename().string().size() + 12 <= 255 ? target.filename().string() : "shaderbed";
+  std::string name = (target.parent_path() / ("." + stem + ".tmp.XXXXXX")).string();
   std::vector<char> temporary(name.begin(), name.end());
   temporary.push_back('\0');
   const int fd = ::mkstemp(temporary.data());

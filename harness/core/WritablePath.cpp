@@ -1,5 +1,6 @@
 #include "core/WritablePath.h"
 
+#include <limits.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -23,6 +24,11 @@ Result<void> check_writable_file(const std::string& path, const std::string& wha
   std::error_code ec;
   if (fs::is_directory(path, ec))
     return std::unexpected(Error{.message = what + ": '" + path + "' is a folder, not a file", .stage = ErrorStage::options});
+  // Found now, not when the run is over and its report cannot be created.
+  if (const size_t length = fs::path(path).filename().string().size(); length > NAME_MAX)
+    return std::unexpected(Error{.message = what + ": the file name is " + std::to_string(length) +
+                                            " bytes long; this system allows " + std::to_string(NAME_MAX),
+                                 .file = path, .stage = ErrorStage::options});
   const fs::path parent = fs::path(path).parent_path();
   return check_writable_folder(parent.empty() ? "." : parent.string(), what);
 }

@@ -1,5 +1,7 @@
 #include "run/WorkerOptions.h"
 
+#include <optional>
+
 #include <nlohmann/json.hpp>
 
 namespace shaderbed {
@@ -67,14 +69,67 @@ WorkerOptions worker_options(const RunOptions& o) {
   return {o.select, cell_settings(o), {cache_settings(), chosen_vulkan_device()}};
 }
 
+namespace {
+
+// JSON text must be UTF-8, but a path is bytes (`--out` in a Latin-1 folder): every
+// string goes as its bytes, each one code point U+0000..U+00FF, and comes back byte for
+// byte, so a worker writes exactly where the user asked.
+std::string bytes_as_code_points(const std::string& bytes) {
+  std::string text;
+  for (const unsigned char b : bytes) {
+    if (b < 0x80) {
+      text += char(b);
+    } else {
+      text += char(0xC0 | (b >> 6));
+      text += char(0x80 | (b & 0x3F));
+    }
+  }
+  return text;
+}
+
+std::optional<std::string> code_points_as_bytes(const std::string& text) {
+  std::string bytes;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const unsigned char c = text[i];
+    if (c < 0x80) {
+      bytes += char(c);
+    } else if ((c == 0xC2 || c == 0xC3) && i + 1 < text.size() && (text[i + 1] & 0xC0) == 0x80) {
+      bytes += char(((c & 0x03) << 6) | (text[++i] & 0x3F));
+    } else {
+      return std::nullopt;   // not a code point below U+0100: not written by bytes_as_code_points
+    }
+  }
+  return bytes;
+}
+
+// Applies `convert` to every string value in `j` (keys are this file's own ASCII names).
+template <typename Convert>
+bool convert_strings(json& j, const Convert& convert) {
+  if (j.is_string()) {
+    auto converted = convert(j.get<std::string>());
+    if (!converted) return false;
+    j = *converted;
+    return true;
+  }
+  if (j.is_array() || j.is_object())
+    for (json& item : j)
+      if (!convert_strings(item, convert)) return false;
+  return true;
+}
+
+}  // namespace
+
 std::string encode_worker_options(const WorkerOptions& o) {
-  const json j = {{"select", o.select}, {"cell", o.cell}, {"process", o.process}};
-  return j.dump(-1, ' ', false, json::error_handler_t::replace);
+  json j = {{"select", o.select}, {"cell", o.cell}, {"process", o.process}};
+  convert_strings(j, [](const std::string& s) { return std::optional(bytes_as_code_points(s)); });
+  return j.dump();
 }
 
 Result<WorkerOptions> decode_worker_options(std::string_view line) {
-  const json j = json::parse(line, nullptr, false);
+  json j = json::parse(line, nullptr, false);
   if (j.is_discarded() || !j.is_object()) return fail(ErrorStage::worker, "the options line is not a JSON object");
+  if (!convert_strings(j, code_points_as_bytes))
+    return fail(ErrorStage::worker, "the options line has a string that is not bytes as code points");
   try {
     WorkerOptions o;
     j.at("select").get_to(o.select);

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "CopiedCase.h"
 #include "FileContents.h"
 #include "ShellCommand.h"
 #include "TempDir.h"
@@ -14,18 +15,10 @@
 namespace {
 
 namespace fs = std::filesystem;
+using shaderbed::test::copy_blinn_phong_case;
 using shaderbed::test::read_text;
 using shaderbed::test::shaderbed_cli;
 using shaderbed::test::TempDir;
-
-// A real-world case and its shaders, in the layout the case expects (cases/ beside glsl330/).
-fs::path copy_case(const TempDir& dir) {
-  const fs::path from = fs::path(SHADERBED_SOURCE_DIR) / "tests/realworld";
-  fs::create_directories(dir / "cases");
-  fs::copy(from / "glsl330", dir / "glsl330", fs::copy_options::recursive);
-  fs::copy_file(from / "cases/glsl330_blinn_phong.toml", dir / "cases/blinn.toml");
-  return dir / "cases/blinn.toml";
-}
 
 // The command is refused as bad input naming the option, and `input` is unchanged.
 void expect_refused(const std::string& args, const fs::path& input, const std::string& option) {
@@ -40,7 +33,7 @@ void expect_refused(const std::string& args, const fs::path& input, const std::s
 
 TEST(OutputsNotInputs, RunRefusesJsonOverItsCaseFile) {
   TempDir dir("out_in_case");
-  const fs::path c = copy_case(dir);
+  const fs::path c = copy_blinn_phong_case(dir.path());
   expect_refused("run --case " + c.string() + " --backend vulkan --shape sphere --size 16 --repeat 0 --json " +
                      (dir / "cases/../cases/blinn.toml"),
                  c, "--json");
@@ -48,7 +41,7 @@ TEST(OutputsNotInputs, RunRefusesJsonOverItsCaseFile) {
 
 TEST(OutputsNotInputs, RunRefusesJunitOverAShaderThroughASymlink) {
   TempDir dir("out_in_shader");
-  const fs::path c = copy_case(dir);
+  const fs::path c = copy_blinn_phong_case(dir.path());
   fs::create_symlink(dir / "glsl330/blinn_phong.frag", dir / "report.xml");
   expect_refused("run --case " + c.string() + " --backend vulkan --shape sphere --size 16 --repeat 0 --junit " +
                      (dir / "report.xml"),

@@ -36,6 +36,19 @@ TEST(WorkerOptions, RoundTripsEveryField) {
   EXPECT_EQ(encode_worker_options(*received), encode_worker_options(sent));
 }
 
+// A path is bytes: a Latin-1 folder name (not UTF-8) and a UTF-8 one both arrive unchanged.
+TEST(WorkerOptions, PathsArriveByteForByte) {
+  WorkerOptions sent = unusual_options();
+  sent.select.cases_dir = "/cases/caf\xe9";
+  sent.cell.out_dir = "/out/\xff\xfe/\xc3\xa9t\xc3\xa9";
+  sent.cell.save_images_dir = "/nul\x01\x7f\x80";
+  const auto received = decode_worker_options(encode_worker_options(sent));
+  ASSERT_TRUE(received) << received.error().to_string();
+  EXPECT_EQ(received->select.cases_dir, sent.select.cases_dir);
+  EXPECT_EQ(received->cell.out_dir, sent.cell.out_dir);
+  EXPECT_EQ(received->cell.save_images_dir, sent.cell.save_images_dir);
+}
+
 TEST(WorkerOptions, DefaultsRoundTrip) {
   const auto received = decode_worker_options(encode_worker_options({}));
   ASSERT_TRUE(received) << received.error().to_string();
