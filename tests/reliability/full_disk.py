@@ -8,7 +8,8 @@ and a JSON of every cell, no cell becomes an error for want of space, every cell
 an image says so in its warnings and names no artefact that is missing, and no image, JSON
 or HTML file is left empty or cut short at its final name.
 
-usage: full_disk.py SOURCE_DIR SHADERBED [--size N] [--cases a,b]
+usage: full_disk.py SOURCE_DIR SHADERBED [--size N] [--cases a,b] [--slow]
+--slow (scripts/test --reliability): more cases, on disks of 256 KiB, 1 MiB and 4 MiB.
 """
 import argparse
 import json
@@ -20,10 +21,10 @@ import sys
 import tempfile
 
 
-def mount_small_tmpfs(path):
+def mount_small_tmpfs(path, kib):
     if os.geteuid() != 0:
         return False
-    r = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=1m", "tmpfs", path], capture_output=True)
+    r = subprocess.run(["mount", "-t", "tmpfs", "-o", f"size={kib}k", "tmpfs", path], capture_output=True)
     return r.returncode == 0
 
 
@@ -33,11 +34,18 @@ def main():
     ap.add_argument("shaderbed")
     ap.add_argument("--size", default="64")
     ap.add_argument("--cases", default="lambert")
+    ap.add_argument("--slow", action="store_true")
     a = ap.parse_args()
+    if a.slow:
+        return max(probe(a.shaderbed, "lambert,phong,ward_iso,cook_torrance", a.size, kib) for kib in (256, 1024, 4096))
+    return probe(a.shaderbed, a.cases, a.size, 1024)
+
+
+def probe(shaderbed, cases, size, kib):
     with tempfile.TemporaryDirectory(prefix="shaderbed_full_disk_") as tmp:
         full = os.path.join(tmp, "full")
         os.mkdir(full)
-        mounted = mount_small_tmpfs(full)
+        mounted = mount_small_tmpfs(full, kib)
 
         def cap_file_size():
             # Writes past 64 KiB fail with EFBIG (SIGXFSZ ignored, as the workers inherit it).
@@ -46,12 +54,12 @@ def main():
 
         results = os.path.join(tmp, "results.json")
         try:
-            cmd = [a.shaderbed, "run", "--case", a.cases, "--size", a.size, "--repeat", "0", "-q",
+            cmd = [shaderbed, "run", "--case", cases, "--size", size, "--repeat", "0", "-q",
                    "--out", os.path.join(full, "out"), "--html", os.path.join(full, "html"), "--json", results]
             run = subprocess.run(cmd, capture_output=True, text=True, timeout=600,
                                  preexec_fn=None if mounted else cap_file_size)
             out = run.stdout + run.stderr
-            print(f"{'1 MiB tmpfs' if mounted else 'RLIMIT_FSIZE 64 KiB'}: exit {run.returncode}")
+            print(f"{f'{kib} KiB tmpfs' if mounted else 'RLIMIT_FSIZE 64 KiB'}, {cases}: exit {run.returncode}")
             problems = []
             if " cells: " not in out:
                 problems.append("no summary line")
