@@ -41,8 +41,8 @@ Result<ChildExit> run_child(const std::vector<std::string>& args, const std::fil
   posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   pid_t pid = 0;
-  const int spawned = ::posix_spawn(&pid, argv_text[0].c_str(), &actions, nullptr, argv.data(),
-                                    environment ? envp.data() : environ);
+  const int spawned = ::posix_spawnp(&pid, argv_text[0].c_str(), &actions, nullptr, argv.data(),
+                                     environment ? envp.data() : environ);
   posix_spawn_file_actions_destroy(&actions);
   if (spawned != 0) return fail(stage, "cannot run " + args[0] + ": " + std::strerror(spawned));
 

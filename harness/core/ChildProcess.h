@@ -22,8 +22,8 @@ struct ChildExit {
   std::string how() const;   // "exit 3", "signal 11"
 };
 
-// args[0] is the program (a path); `environment` replaces ours when given. Captured
-// output goes to files in `capture_dir`. An Error (with `stage`) only when the child
+// args[0] is the program (a path, or a name looked up on PATH); `environment` replaces
+// ours when given. Captured output goes to files in `capture_dir`. An Error (with `stage`) only when the child
 // cannot be started or waited for; a child that fails is a ChildExit saying how.
 Result<ChildExit> run_child(const std::vector<std::string>& args, const std::filesystem::path& capture_dir,
                             ErrorStage stage,

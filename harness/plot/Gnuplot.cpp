@@ -1,8 +1,7 @@
 #include "plot/Gnuplot.h"
 
-#include <unistd.h>
-
-#include <cstdlib>
+#include <cerrno>
+#include <cstring>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -15,11 +14,6 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr const char* kInstallHint = "install gnuplot-nox (scripts/install-deps)";
-
-bool is_executable_file(const fs::path& p) {
-  std::error_code ec;
-  return fs::is_regular_file(p, ec) && ::access(p.c_str(), X_OK) == 0;
-}
 
 // The line worth showing: gnuplot prints warnings (e.g. a missing data file) before the
 // error that stopped it, so prefer the first line that is not a warning.
@@ -37,26 +31,14 @@ std::string first_error_line(const std::string& text) {
 
 }  // namespace
 
-Result<fs::path> find_gnuplot(const std::string& gnuplot) {
-  if (gnuplot.find('/') != std::string::npos) {
-    if (is_executable_file(gnuplot)) return fs::path(gnuplot);
-    return fail(ErrorStage::plot, fmt::format("gnuplot not found at {}: {}", gnuplot, kInstallHint));
-  }
-  const char* env_path = std::getenv("PATH");
-  std::string search = env_path != nullptr ? env_path : "/usr/local/bin:/usr/bin:/bin";
-  std::istringstream dirs(search);
-  for (std::string dir; std::getline(dirs, dir, ':');) {
-    const fs::path candidate = fs::path(dir.empty() ? "." : dir) / gnuplot;  // empty entry = cwd, as execvp does
-    if (is_executable_file(candidate)) return candidate;
-  }
-  return fail(ErrorStage::plot, fmt::format("{} not found on PATH: {}", gnuplot, kInstallHint));
-}
-
 Result<void> run_gnuplot(const std::string& gnuplot, const fs::path& script) {
-  auto program = find_gnuplot(gnuplot);
-  if (!program) return std::unexpected(program.error());
-  auto exit = run_child({program->string(), script.string()}, script.parent_path(), ErrorStage::plot);
+  // posix_spawnp looks a bare name up on PATH as a shell would (run_child).
+  auto exit = run_child({gnuplot, script.string()}, script.parent_path(), ErrorStage::plot);
   if (!exit) {
+    if (exit.error().message.ends_with(std::strerror(ENOENT)))
+      return fail(ErrorStage::plot, gnuplot.find('/') == std::string::npos
+                                        ? fmt::format("{} not found on PATH: {}", gnuplot, kInstallHint)
+                                        : fmt::format("gnuplot not found at {}: {}", gnuplot, kInstallHint));
     Error e = std::move(exit.error());
     e.message += fmt::format(" ({})", kInstallHint);
     return std::unexpected(std::move(e));

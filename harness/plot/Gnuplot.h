@@ -1,5 +1,5 @@
 #pragma once
-// gnuplot as a child process: find it, run one script, turn a failure into an Error
+// gnuplot as a child process: run one script, turn a failure into an Error
 // (stage "plot") that says what to install or what gnuplot complained about.
 #include <filesystem>
 #include <string>
@@ -9,11 +9,8 @@
 
 namespace shaderbed {
 
-// `gnuplot` is a name looked up on PATH ("gnuplot") or a path (contains '/').
-Result<std::filesystem::path> find_gnuplot(const std::string& gnuplot);
-
-// Runs `gnuplot script` with stdin from /dev/null; fails when gnuplot cannot be found or
-// started, or exits non-zero (the message carries its first error line on stderr).
+// Runs `gnuplot script` with stdin from /dev/null (`gnuplot` is a name looked up on PATH,
+// or a path when it contains '/'); fails when gnuplot cannot be found or started, or exits non-zero (the message carries its first error line on stderr).
 Result<void> run_gnuplot(const std::string& gnuplot, const std::filesystem::path& script);
 
 // A gnuplot single-quoted string literal for arbitrary text. Inside single quotes

@@ -1,5 +1,7 @@
 #include "run/Expectations.h"
 
+#include <fnmatch.h>
+
 #include <toml++/toml.h>
 
 #include "scene/TomlKeys.h"
@@ -18,37 +20,18 @@ std::vector<std::string> split(const std::string& s) {
   }
 }
 
-// '*' matches any run of characters within one segment. Greedy with one backtrack point
-// (the last '*'): O(|pattern| x |text|) at worst, where the recursive form was exponential
-// in the number of stars.
-bool glob(std::string_view pattern, std::string_view text) {
-  size_t p = 0, t = 0;
-  size_t star = std::string_view::npos, resume = 0;
-  while (t < text.size()) {
-    if (p < pattern.size() && pattern[p] == '*') {
-      star = p++;
-      resume = t;
-    } else if (p < pattern.size() && pattern[p] == text[t]) {
-      ++p, ++t;
-    } else if (star != std::string_view::npos) {
-      p = star + 1;
-      t = ++resume;
-    } else {
-      return false;
-    }
-  }
-  while (p < pattern.size() && pattern[p] == '*') ++p;
-  return p == pattern.size();
-}
-
 }  // namespace
 
+// '*' matches any run of characters within one segment: fnmatch(3) with FNM_PATHNAME,
+// whose matcher stays fast with many stars (the test with 40 of them), and with '?', '['
+// and '\\' escaped, so a cell pattern has no other wildcard than the one documented.
 bool matches(const std::string& pattern, const std::string& cell_id) {
-  const auto p = split(pattern), c = split(cell_id);
-  if (p.size() != c.size()) return false;
-  for (size_t i = 0; i < p.size(); ++i)
-    if (!glob(p[i], c[i])) return false;
-  return true;
+  std::string escaped;
+  for (const char c : pattern) {
+    if (c == '?' || c == '[' || c == '\\') escaped += '\\';
+    escaped += c;
+  }
+  return ::fnmatch(escaped.c_str(), cell_id.c_str(), FNM_PATHNAME) == 0;
 }
 
 Result<std::vector<KnownFailure>> load_expectations(const std::string& path) {

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <map>
 
+#include <boost/math/distributions/students_t.hpp>
+
 #include <fmt/format.h>
 
 namespace shaderbed::stats {
@@ -42,21 +44,8 @@ Result<void> check_metric(const std::string& metric) {
 }
 
 double t_critical_95(int df) {
-  static constexpr double table[] = {0,      12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228,
-                                     2.201,  2.179,  2.160, 2.145, 2.131, 2.120, 2.110, 2.101, 2.093, 2.086, 2.080,
-                                     2.074,  2.069,  2.064, 2.060, 2.056, 2.052, 2.048, 2.045, 2.042};
   if (df < 1) return INFINITY;
-  if (df <= 30) return table[df];
-  // Beyond 30: interpolate in 1/df between 30 (2.042), 60 (2.000), 120 (1.980) and infinity (1.960).
-  struct P { double inv, t; };
-  static constexpr P pts[] = {{1.0 / 30, 2.042}, {1.0 / 60, 2.000}, {1.0 / 120, 1.980}, {0.0, 1.960}};
-  const double inv = 1.0 / df;
-  for (int i = 0; i < 3; ++i)
-    if (inv <= pts[i].inv && inv >= pts[i + 1].inv) {
-      const double f = (inv - pts[i + 1].inv) / (pts[i].inv - pts[i + 1].inv);
-      return pts[i + 1].t + f * (pts[i].t - pts[i + 1].t);
-    }
-  return 1.960;
+  return boost::math::quantile(boost::math::complement(boost::math::students_t(df), 0.025));
 }
 
 Comparison compare(const StatsReport& baseline, const StatsReport& current, const std::string& metric) {

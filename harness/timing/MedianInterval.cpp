@@ -3,16 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include <boost/math/distributions/binomial.hpp>
+
 namespace shaderbed {
 namespace {
 
-// P(B <= k) for B ~ Binomial(n, 1/2), summed in log space so large n cannot overflow.
-double binomial_cdf_half(int n, int k) {
-  double total = 0;
-  for (int i = 0; i <= k; ++i)
-    total += std::exp(std::lgamma(n + 1.0) - std::lgamma(i + 1.0) - std::lgamma(n - i + 1.0) + n * std::log(0.5));
-  return std::min(total, 1.0);
-}
+// P(B <= k) for B ~ Binomial(n, 1/2).
+double binomial_cdf_half(int n, int k) { return boost::math::cdf(boost::math::binomial(n, 0.5), k); }
 
 }  // namespace
 

@@ -50,8 +50,9 @@ TEST(Baseline, ConfidenceIntervalAndInconclusive) {
   const Comparison c = compare(kOld, kNew);
   ASSERT_TRUE(c.mean_ci.has_value());
   EXPECT_DOUBLE_EQ(c.mean_change, -2.0);
-  EXPECT_NEAR(c.mean_ci->low, -2.0 - 15.589, 1e-3);
-  EXPECT_NEAR(c.mean_ci->high, -2.0 + 15.589, 1e-3);
+  // Half-width t(0.975, 1) x s / sqrt(n), with t = 12.7062 exactly (12.706 in printed tables).
+  EXPECT_NEAR(c.mean_ci->low, -2.0 - 15.5907, 1e-3);
+  EXPECT_NEAR(c.mean_ci->high, -2.0 + 15.5907, 1e-3);
   EXPECT_TRUE(c.inconclusive());
   EXPECT_NE(format_comparison(c).find("Inconclusive result"), std::string::npos);
 }
@@ -93,8 +94,10 @@ TEST(Baseline, JsonRoundTripKeepsTheSchema) {
 }
 
 TEST(Baseline, TCritical) {
-  EXPECT_DOUBLE_EQ(t_critical_95(1), 12.706);
-  EXPECT_DOUBLE_EQ(t_critical_95(30), 2.042);
+  EXPECT_NEAR(t_critical_95(1), 12.706, 5e-4);   // the printed tables' values
+  EXPECT_NEAR(t_critical_95(5), 2.571, 5e-4);
+  EXPECT_NEAR(t_critical_95(30), 2.042, 5e-4);
+  EXPECT_NEAR(t_critical_95(60), 2.000, 5e-4);
   EXPECT_NEAR(t_critical_95(1000000), 1.960, 1e-3);
 }
 
