@@ -575,8 +575,12 @@ class Writer {
     h += fmt::format(
         "<p class=\"policy\">Images: {} embedded ({:.1f} MB), {} linked to the run's files, {} missing. Embedded first: "
         "failing cells, one passing example per case/variant, other renders of failing shapes, then the rest while the budget lasts. Error heat maps show the "
-        "interior threshold as mid grey. Click a table header to sort, a row for details, an image to zoom.{}</p>\n",
+        "interior threshold as mid grey. Click a table header to sort, a row for details, an image to zoom.{}{}</p>\n",
         summary_.images_embedded, summary_.image_bytes / 1048576.0, summary_.images_linked, summary_.images_missing,
+        report_.keep_images == "failing" ? " The run kept the images of the cells that did not pass only "
+                                           "(<code>--keep-images all</code> keeps every cell's)."
+        : report_.keep_images == "none"  ? " The run kept no images (<code>--keep-images none</code>)."
+                                         : "",
         summary_.sources_not_copied ? fmt::format(" {} shader source{} could not be copied into the report (no link).",
                                                   summary_.sources_not_copied, summary_.sources_not_copied == 1 ? "" : "s")
                                     : "");

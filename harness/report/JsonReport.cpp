@@ -487,6 +487,7 @@ RunReport read_report(const json& j) {
     read(*incomplete, "reason", "/incomplete", i.reason);
   }
   read(j, "out_dir", "", report.out_dir);
+  read(j, "keep_images", "", report.keep_images);
   read(j, "wall_ms", "", report.wall_ms);
   read(j, "workers", "", report.workers);
   if (const json* c = object_at(j, "cache", "")) {
@@ -522,6 +523,7 @@ ojson report_json(const RunReport& report) {
   if (report.interruption)
     j["incomplete"] = {{"signal", report.interruption->signal}, {"reason", report.interruption->reason}};
   j["out_dir"] = report.out_dir;
+  j["keep_images"] = report.keep_images;
   j["wall_ms"] = json_number(report.wall_ms);
   j["workers"] = report.workers;
   if (report.cache) {   // optional: merged reports have none

@@ -258,6 +258,7 @@ struct RunReport {
   double wall_ms = 0;
   int workers = 1;                  // worker threads that ran the cells (run --jobs)
   std::string out_dir;
+  std::string keep_images;          // which cells' images out_dir has (CellSettings::keep_images); "" = unknown
   std::string shard;                // "I/N" when this is one shard of a run, else ""
 
   size_t count(CellStatus status) const {

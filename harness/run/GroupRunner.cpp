@@ -116,9 +116,7 @@ struct GroupRunner::Impl final : GroupDrawer {
     const Mesh& mesh = additions_ && additions_->mesh ? *additions_->mesh : shape;
     const ReferenceSource source = reference->source();
     const Result<ReferenceImage>* group_image = reference->group_image();
-    group_reference_written_ = group_image && *group_image && !dir.empty()
-                                   ? write_reference(**group_image, dir / "reference")
-                                   : Result<void>{};
+    group_reference_written_.reset();   // written with the first kept cell that is judged against it
     classes_ = group_image && *group_image ? classify_pixels(**group_image) : std::vector<PixelClass>{};
 
     std::vector<CellResult> results;
@@ -485,7 +483,10 @@ struct GroupRunner::Impl final : GroupDrawer {
     r.status = cmp.pass ? CellStatus::pass : CellStatus::fail;
     r.message = cmp.reason;
 
-    if (dir.empty()) return {};
+    // --keep-images: a green run writes no images unless asked (issue 29: a default run's
+    // --out was 0.4 GB at 256 px, nearly all of it passing cells).
+    const bool kept = settings_.keep_images == "all" || (settings_.keep_images == "failing" && !cmp.pass);
+    if (dir.empty() || !kept) return {};
     const std::string stem = fmt::format("{}-{}-{}", r.language, r.backend, r.path);
     r.artefacts.render_exr = (dir / (stem + ".exr")).string();
     r.artefacts.render_png = (dir / (stem + ".png")).string();
@@ -507,7 +508,8 @@ struct GroupRunner::Impl final : GroupDrawer {
       r.artefacts.reference_png = (dir / (stem + ".reference.png")).string();
       keep(write_reference(reference, dir / (stem + ".reference")), r.artefacts.reference_png);
     } else {
-      keep(group_reference_written_, r.artefacts.reference_png);
+      if (!group_reference_written_) group_reference_written_ = write_reference(reference, dir / "reference");
+      keep(*group_reference_written_, r.artefacts.reference_png);
     }
     keep(write_exr(r.artefacts.render_exr, scene_.width, scene_.height, image.rgba), r.artefacts.render_exr);
     keep(write_png(r.artefacts.render_png, image), r.artefacts.render_png);
@@ -531,7 +533,7 @@ struct GroupRunner::Impl final : GroupDrawer {
   std::map<std::string, double> areas_;             // shape/tessellation: projected pixels
   std::map<std::string, Result<Texture>> luts_;     // case/variant
   std::map<std::string, std::vector<std::string>> other_sources_;   // by case/variant/language
-  Result<void> group_reference_written_;            // the group's reference.png, when it has one
+  std::optional<Result<void>> group_reference_written_;   // the group's reference.png, once written
   // The current group's.
   const CellGroup* group_ = nullptr;
   const Mesh* shape_ = nullptr;

@@ -45,6 +45,9 @@ struct CellSettings {
   // --twin: every drawn cell also drawn by the shader's twin in this precision ("double",
   // "float", "half"; "" = off), and CellResult::twin filled.
   std::string twin;
+  // Which cells' images --out keeps: "failing" (every cell that did not pass, and the
+  // references they are judged against), "all", or "none". A green run writes no images.
+  std::string keep_images = "failing";
   bool operator==(const CellSettings&) const = default;
 };
 

@@ -276,6 +276,7 @@ Result<RunReport> run_suite(const RunOptions& o) {
   report.run_id = run_identity(o);
   report.case_digests = case_digests((*plan)->cases);
   report.out_dir = o.cell.out_dir;
+  if (!o.cell.out_dir.empty()) report.keep_images = o.cell.keep_images;
   report.shard = o.select.shard;
   SceneSetup scene;
   scene.width = scene.height = o.cell.size;

@@ -36,7 +36,8 @@ void to_json(json& j, const CellSettings& c) {
        {"relaxed_precision", c.relaxed_precision},
        {"per_pixel_reference", c.per_pixel_reference},
        {"unused_binding_warnings", c.unused_binding_warnings},
-       {"twin", c.twin}};
+       {"twin", c.twin},
+       {"keep_images", c.keep_images}};
 }
 void from_json(const json& j, CellSettings& c) {
   j.at("size").get_to(c.size);
@@ -48,6 +49,7 @@ void from_json(const json& j, CellSettings& c) {
   j.at("mesh_slices").get_to(c.mesh_slices);
   j.at("relaxed_precision").get_to(c.relaxed_precision);
   j.at("per_pixel_reference").get_to(c.per_pixel_reference);
+  j.at("keep_images").get_to(c.keep_images);
   j.at("unused_binding_warnings").get_to(c.unused_binding_warnings);
   j.at("twin").get_to(c.twin);
 }

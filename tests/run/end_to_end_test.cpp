@@ -269,8 +269,8 @@ TEST(EndToEnd, OneWorkerAndThreeWorkersGiveTheSameResults) {
 TEST(EndToEnd, AnHtmlReportWithoutOutHasItsImages) {
   const fs::path dir = fs::temp_directory_path() / ("shaderbed_html_only_" + std::to_string(::getpid()));
   fs::remove_all(dir);
-  auto [status, out] = shaderbed_cli("run --case lambert --shape cube --variant pixel --lang glsl --size 32 --html " +
-                                     (dir / "html").string());
+  auto [status, out] = shaderbed_cli("run --case lambert --shape cube --variant pixel --lang glsl --size 32 "
+                                     "--keep-images all --html " + (dir / "html").string());
   ASSERT_EQ(status, 0) << out;
   std::ifstream in(dir / "html" / "index.html");
   const std::string html((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

@@ -23,7 +23,9 @@ WorkerOptions unusual_options() {
             .mesh_slices = 17,
             .relaxed_precision = true,
             .per_pixel_reference = true,
-            .unused_binding_warnings = false};
+            .unused_binding_warnings = false,
+            .twin = "half",
+            .keep_images = "all"};
   o.process = {.caches = {.root = "/cache", .driver = false, .compile = false}, .vulkan_device = "1"};
   return o;
 }

@@ -50,6 +50,11 @@ Command add_run_command(CLI::App& app) {
       ->check(CLI::IsMember({"double", "float", "half"}));
   cmd->add_option("--out", run.cell.out_dir,
                   "Folder for renders, references and error images (EXR + PNG); default with --html: its folder");
+  cmd->add_option("--keep-images", run.cell.keep_images,
+                  "Which cells' images --out keeps: failing (every cell that did not pass, with its reference), "
+                  "all, or none")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"failing", "all", "none"}));
   cmd->add_option("--save-images", run.cell.save_images_dir,
                   "Keep every drawn cell's render, exact (EXR: RGBA + coverage), with DIR/manifest.json (case, "
                   "variant, language, backend, path, shape, size, scene, toolchain, SPIR-V hashes), for later runs "
