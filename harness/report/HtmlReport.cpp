@@ -574,6 +574,7 @@ class Writer {
         "failing cells, one passing example per case/variant, other renders of failing shapes, then the rest while the budget lasts. Error heat maps show the "
         "interior threshold as mid grey. Click a table header to sort, a row for details, an image to zoom.</p>\n",
         summary_.images_embedded, summary_.image_bytes / 1048576.0, summary_.images_linked, summary_.images_missing);
+    for (const std::string& note : options_.notes) h += fmt::format("<p class=\"note\">{}</p>\n", escape(note));
     std::string nav;
     for (const auto& [k, title] : {std::pair{"fail", "failures"}, std::pair{"error", "errors"}, std::pair{"known", "known failures"},
                                   std::pair{"skipped", "skipped"}}) {

@@ -26,7 +26,9 @@ struct ReportOutputs {
   // Checks every output path can be written, before any work; false after printing why.
   bool check_writable() const;
   // Writes what was asked for; prints where; false (after printing the error) on failure.
-  bool write(const RunReport& report) const;
+  // `html_view` (merge): the report the HTML page shows instead, with `html_notes` on it.
+  bool write(const RunReport& report, const RunReport* html_view = nullptr,
+             const std::vector<std::string>& html_notes = {}) const;
 };
 
 }  // namespace shaderbed
