@@ -593,9 +593,10 @@ Result<RunReport> parse_json(std::string_view text, const std::string& file) {
     return std::unexpected(Error{.message = (b.pointer.empty() ? std::string("/") : b.pointer) + ": " + b.message,
                                  .file = file,
                                  .stage = ErrorStage::report});
-  }  } catch (const json::exception& e) {
+  } catch (const json::exception& e) {
     // A field's type the readers above did not check: bad input too, never an abort.
-    return std::unexpected(Error{.message = std::string("unexpected value: ") + e.what(), .file = file, .stage = ErrorStage::report});
+    return std::unexpected(
+        Error{.message = std::string("unexpected value: ") + e.what(), .file = file, .stage = ErrorStage::report});
   }
 }
 

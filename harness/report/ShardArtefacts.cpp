@@ -3,8 +3,9 @@
 #include <filesystem>
 
 namespace shaderbed {
-namespace fs = std::filesystem;
 namespace {
+
+namespace fs = std::filesystem;
 
 // `path` (made canonical as far as it exists) when it lies inside `root` (canonical), else "".
 fs::path inside(const fs::path& path, const fs::path& root) {

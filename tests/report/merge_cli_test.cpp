@@ -22,9 +22,9 @@ namespace fs = std::filesystem;
 using test::shaderbed_cli;
 using test::TempDir;
 
-nlohmann::json load(const std::string& path) { return nlohmann::json::parse(std::ifstream(path)); }
-void save(const std::string& path, const nlohmann::json& j) { std::ofstream(path) << j.dump(1); }
-std::string slurp(const fs::path& path) {
+nlohmann::json load_results(const std::string& path) { return nlohmann::json::parse(std::ifstream(path)); }
+void save_results(const std::string& path, const nlohmann::json& j) { std::ofstream(path) << j.dump(1); }
+std::string file_text(const fs::path& path) {
   std::ostringstream s;
   s << std::ifstream(path, std::ios::binary).rdbuf();
   return s.str();
@@ -44,23 +44,23 @@ TEST(MergeCli, AHandEditedPassFailsTheMergeAndAShardWithoutARunIdIsRefused) {
   const std::string json = one_cell_run(dir);
   ASSERT_EQ(shaderbed_cli("merge " + json).first, 0) << "the honest shard merges";
 
-  nlohmann::json forged = load(json);
+  nlohmann::json forged = load_results(json);
   nlohmann::json& cell = forged["results"][0];
   cell["status"] = "pass";
   cell["metrics"]["bad_pixels"] = 500;
   cell["metrics"]["max_abs"] = 80;
   cell["metrics"]["nonfinite"] = 7;
-  save(dir / "forged.json", forged);
+  save_results(dir / "forged.json", forged);
   auto [status, out] = shaderbed_cli("merge --quiet " + (dir / "forged.json"));
   EXPECT_EQ(status, 1) << out;
   EXPECT_NE(out.find("lambert/pixel/glsl/vulkan/spirv/sphere: shard said pass; its metrics fail"), std::string::npos) << out;
 
   for (const bool erase : {true, false}) {
-    nlohmann::json anonymous = load(json);
+    nlohmann::json anonymous = load_results(json);
     if (erase) anonymous.erase("run_id");
     else anonymous["run_id"] = "";
-    save(dir / "anonymous.json", anonymous);
-    auto [refused, why] = shaderbed_cli("merge " + json + " " + (dir / "anonymous.json"));
+    save_results(dir / "anonymous.json", anonymous);
+    auto [refused, why] = shaderbed_cli("merge " + (dir / "anonymous.json"));
     EXPECT_EQ(refused, 2) << why;
     EXPECT_NE(why.find("shaderbed: " + (dir / "anonymous.json") + ": merge: no run_id"), std::string::npos) << why;
   }
@@ -74,26 +74,29 @@ TEST(MergeCli, TheHtmlPageReadsNoFileOutsideTheShardsFolder) {
   const std::string secret = std::string("\x89PNG\r\n\x1a\nX") + "TOPSECRET-IMAGE-BYTES";
   const std::string png = dir.write("private/secret.png", secret);
   dir.write("private/notes.txt", "TOPSECRET-TEXT");
-  nlohmann::json edited = load(json);
+  nlohmann::json edited = load_results(json);
   nlohmann::json& artefacts = edited["results"][0]["artefacts"];
   const std::string own_render = artefacts["render_png"];
   ASSERT_FALSE(own_render.empty());
   artefacts["error_png"] = png;                                // absolute, outside
   artefacts["vertex_spirv"] = "../private/notes.txt";          // relative, climbing out
-  save(dir / "out/a.json", edited);
+  artefacts["fragment_spirv"] = dir / "private/notes.txt";     // absolute, outside
+  save_results(dir / "out/a.json", edited);
   // A symlink inside the folder that points out is outside too.
   fs::create_symlink(png, dir / "out/link.png");
   edited["results"][0]["artefacts"]["reference_png"] = (dir / "out/link.png");
-  save(dir / "out/a.json", edited);
+  save_results(dir / "out/a.json", edited);
 
   auto [status, out] = shaderbed_cli("merge --quiet " + json + " --html " + (dir / "report"));
   ASSERT_EQ(status, 0) << out;
-  const std::string page = slurp(dir / "report/index.html");
+  const std::string page = file_text(dir / "report/index.html");
   EXPECT_EQ(page.find("VE9QU0VDUkVU"), std::string::npos) << "base64 of the secret's bytes is in the page";
   EXPECT_EQ(page.find("../private/"), std::string::npos) << "nor linked";
-  EXPECT_NE(page.find("3 artefact paths not shown: outside the folder of the results file"), std::string::npos);
+  EXPECT_NE(page.find("4 artefact paths not shown: outside the folder of the results file"), std::string::npos);
   for (const auto& entry : fs::recursive_directory_iterator(dir / "report"))
-    if (entry.is_regular_file()) EXPECT_EQ(slurp(entry.path()).find("TOPSECRET-TEXT"), std::string::npos) << entry.path();
+    if (entry.is_regular_file()) {
+      EXPECT_EQ(file_text(entry.path()).find("TOPSECRET-TEXT"), std::string::npos) << entry.path();
+    }
   EXPECT_NE(page.find("data:image/png;base64,"), std::string::npos) << "the shard's own render is still embedded";
 }
 
@@ -103,8 +106,8 @@ TEST(MergeCli, ADeviceOrAFifoIsOneErrorNamingIt) {
   const std::string fifo = dir / "fifo.json";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
   const std::string valid = dir.write("valid.json", "{}");
-  for (const std::string& args : {"merge /dev/zero", "merge " + fifo, "merge --chart /dev/zero " + valid,
-                                  "merge --chart " + fifo + " " + valid, "run --chart /dev/zero --case lambert",
+  for (const std::string& args : {std::string("merge /dev/zero"), "merge " + fifo, "merge --chart /dev/zero " + valid,
+                                  "merge --chart " + fifo + " " + valid, std::string("run --chart /dev/zero --case lambert"),
                                   "run --chart " + fifo + " --case lambert"}) {
     // (Bounded, should it ever read /dev/zero again: this machine is shared.)
     auto [status, out] = test::run_shell("ulimit -v 4000000; timeout 10 " + std::string(SHADERBED_BINARY) + " " + args);

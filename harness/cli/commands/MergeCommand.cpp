@@ -1,5 +1,7 @@
 // `shaderbed merge A.json B.json ...`: joins shard results into one report, in the same
-// canonical order as one whole run.
+// canonical order as one whole run. A shard is a file anyone can edit: its cells are judged
+// again (report/ShardMerge.h), and its artefact paths are confined to its own folder for
+// the HTML page (report/ShardArtefacts.h).
 #include <map>
 #include <memory>
 #include <optional>
