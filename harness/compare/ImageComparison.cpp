@@ -62,14 +62,6 @@ inline PixelError pixel_error(const float* r, const double* q) {
   return {e, mismatch};
 }
 
-// How far a channel error is into its tolerance: d / (max_abs + max_rel |reference|);
-// over 1 fails. A zero tolerance passes only an exact match.
-inline double tolerance_share(double d, double reference, double max_abs, double max_rel) {
-  const double allowed = max_abs + (std::isfinite(reference) ? max_rel * std::abs(reference) : 0.0);
-  if (allowed > 0) return d / allowed;
-  return d == 0 ? 0.0 : kInf;
-}
-
 template <typename Q>
 inline double pixel_share(const double* d, const Q* q, double max_abs, double max_rel) {
   return std::max({tolerance_share(d[0], q[0], max_abs, max_rel), tolerance_share(d[1], q[1], max_abs, max_rel),
@@ -123,11 +115,7 @@ void mask_colour(const T* p, float* o) {
   }
 }
 
-std::string px(double v) { return fmt::format("{:.0f}", v); }
-
 }  // namespace
-
-size_t coverage_allowance(size_t silhouette_band_pixels) { return 8 + silhouette_band_pixels / 8; }
 
 std::vector<PixelClass> classify_pixels(const ReferenceImage& ref) {
   // Separable 3x3 sums of covered and of uncovered in-image neighbours (pixels outside
@@ -318,38 +306,13 @@ Comparison compare_images(const Image& render, const ReferenceImage& ref, const 
   auto off = [allow](double a, double b) { return std::abs(a - b) > double(allow); };
   const double covered = double(out.covered_pixels), ref_covered = double(out.reference_covered_pixels);
   out.blank = out.covered_pixels == 0 && out.reference_covered_pixels > 0;
-  const bool render_off = off(covered, ref_covered) || (out.expected_area > 0 && off(covered, out.expected_area));
-  const bool reference_off = out.expected_area > 0 && off(ref_covered, out.expected_area);
-  out.degenerate = render_off || reference_off;
+  out.degenerate = off(covered, ref_covered) || (out.expected_area > 0 && off(covered, out.expected_area)) ||
+                   (out.expected_area > 0 && off(ref_covered, out.expected_area));
+  out.interior_tolerance_share = interior_share;
 
-  std::vector<std::string> reasons;
-  const std::string expected = out.expected_area > 0 ? fmt::format(", expected ≈{} px", px(out.expected_area)) : "";
-  if (out.interior.pixels == 0) reasons.push_back("reference covers no interior pixels (nothing to compare)");
-  if (out.blank)
-    reasons.push_back(fmt::format("blank image: coverage 0 px, reference {} px{}", out.reference_covered_pixels, expected));
-  else if (render_off)
-    reasons.push_back(fmt::format("coverage {} px, reference {} px{} (allowed ±{})", out.covered_pixels,
-                                  out.reference_covered_pixels, expected, allow));
-  if (reference_off && !render_off)
-    reasons.push_back(fmt::format("reference coverage {} px, expected ≈{} px (allowed ±{}): the reference is off",
-                                  out.reference_covered_pixels, px(out.expected_area), allow));
-  else if (reference_off)
-    reasons.push_back("the reference's coverage is off the expected area too");
-  if (out.nonfinite_mismatch)
-    reasons.push_back(fmt::format("{} pixels NaN/Inf where the reference is finite or the reverse (fails at any tolerance)",
-                                  out.nonfinite_mismatch));
-  if (!out.blank) {
-    if (out.coverage_mismatch) reasons.push_back(fmt::format("coverage differs at {} pixels", out.coverage_mismatch));
-    const auto bound = [](double max_abs, double max_rel) {
-      return max_rel > 0 ? fmt::format("{:.3g} + {:.3g}|ref|", max_abs, max_rel) : fmt::format("{:.3g}", max_abs);
-    };
-    if (interior_over)
-      reasons.push_back(fmt::format("{} interior pixels over {} (max {:.3g})", interior_over,
-                                    bound(t.interior_max_abs, t.interior_max_rel), interior_finite_max));
-    if (band_over)
-      reasons.push_back(fmt::format("{} silhouette pixels over {} (max {:.3g})", band_over,
-                                    bound(t.silhouette_max_abs, t.silhouette_max_rel), band_finite_max));
-  }
+  // The verdict from the metrics, by the rules `merge` judges a cell read back with.
+  const PixelsOver over{interior_over, band_over, interior_finite_max, band_finite_max};
+  std::vector<std::string> reasons = failed_checks(cell_metrics(out), t, &over);
   if (!reasons.empty() && out.uniform) {
     bool reference_varies = false;
     for (int c = 0; c < 3; ++c) reference_varies = reference_varies || ref_hi[c] - ref_lo[c] > t.interior_max_abs;
@@ -359,7 +322,6 @@ Comparison compare_images(const Image& render, const ReferenceImage& ref, const 
   }
   for (const std::string& s : reasons) out.reason += (out.reason.empty() ? "" : "; ") + s;
   out.pass = out.reason.empty();
-  out.interior_tolerance_share = interior_share;
 
   const bool threshold_independent = out.interior.pixels == 0 || out.blank || out.degenerate ||
                                      out.nonfinite_mismatch || out.coverage_mismatch;

@@ -19,7 +19,8 @@
 #include <vector>
 
 #include "core/Image.h"
-#include "report/Results.h"   // ValueCounts, CellMetrics (header-only model)
+#include "report/CellVerdict.h"   // ComparisonThresholds, coverage_allowance
+#include "report/Results.h"       // ValueCounts, CellMetrics (header-only model)
 
 namespace shaderbed {
 
@@ -41,25 +42,6 @@ struct RegionMetrics {
   double max_abs = 0;        // largest per-channel |render - reference| (RGB); inf with a non-finite mismatch
   double rmse = 0;           // over the finite errors
 };
-
-// A channel passes when |render - reference| <= max_abs + max_rel * |reference|: an
-// absolute floor near black plus a part relative to the pixel's magnitude (differential
-// cases judge one fp32 render against another, whose rounding grows with the value).
-struct ComparisonThresholds {
-  double interior_max_abs = 0;
-  double silhouette_max_abs = 0;
-  double interior_max_rel = 0;
-  double silhouette_max_rel = 0;
-};
-
-// How many covered pixels a render (or the reference) may differ by from the reference
-// (or the expected area): 8 + band / 8, where band = the reference's silhouette band
-// pixels. The band runs along the whole outline, about 2.5 pixels per pixel of outline
-// length, so band / 8 is about a third of a pixel of uniform growth or shrinkage of the
-// outline; the 8 keeps tiny images (16..48 px) clear of pixel-centre sampling noise.
-// Measured (see ImageComparison.cpp) the real differences are 0 between renders and
-// reference and at most 0.45 of the allowance between reference and expected area.
-size_t coverage_allowance(size_t silhouette_band_pixels);
 
 struct Comparison {
   RegionMetrics interior;

@@ -584,6 +584,7 @@ class Writer {
         summary_.sources_not_copied ? fmt::format(" {} shader source{} could not be copied into the report (no link).",
                                                   summary_.sources_not_copied, summary_.sources_not_copied == 1 ? "" : "s")
                                     : "");
+    for (const std::string& note : options_.notes) h += fmt::format("<p class=\"note\">{}</p>\n", escape(note));
     std::string nav;
     for (const auto& [k, title] : {std::pair{"fail", "failures"}, std::pair{"error", "errors"}, std::pair{"known", "known failures"},
                                   std::pair{"skipped", "skipped"}}) {

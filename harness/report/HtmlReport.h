@@ -61,6 +61,8 @@ struct HtmlOptions {
   size_t image_budget = size_t(1) << 20;     // at most this many bytes of base64 image data
   size_t max_page_bytes = size_t(8) << 20;   // and index.html stays under this in total
   std::vector<HtmlChart> charts;
+  // Plain-text notes shown under the image policy, e.g. what `merge` left out of the page.
+  std::vector<std::string> notes;
 };
 
 struct HtmlSummary {

@@ -1,4 +1,5 @@
 #pragma once
+#include <cstddef>
 #include <string>
 #include <string_view>
 
@@ -56,7 +57,11 @@ std::string to_json(const RunReport& report);
 std::string to_json_line(const RunReport& report);
 Result<void> write_json(const RunReport& report, const std::string& path);
 
-// Reads a results file written by write_json (any shard). Errors name the file and, for
+// The largest results file read, far above what a run of the whole library writes.
+constexpr size_t kMaxResultsBytes = size_t(256) << 20;
+
+// Reads a results file written by write_json (any shard); only a regular file of at most
+// kMaxResultsBytes. Errors name the file and, for
 // syntax errors, the line and column; for a wrong field, its JSON pointer. A schema version
 // other than kResultsSchemaVersion is refused.
 Result<RunReport> read_json(const std::string& path);

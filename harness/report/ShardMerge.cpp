@@ -8,6 +8,8 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "report/CellVerdict.h"
+
 namespace shaderbed {
 namespace {
 
@@ -39,9 +41,38 @@ std::string join_tools(ToolVersions& merged, const ToolVersions& part) {
   return "";
 }
 
+// Judges a cell read from a shard again from its own metrics and tolerance, by the rules the
+// run judged it with (report/CellVerdict.h), so a hand-edited status cannot pass. A cell
+// whose status disagrees becomes a failure that says so; returns that note ("" = agrees).
+std::string rejudge(CellResult& r) {
+  std::string said, found;
+  if (r.status == CellStatus::pass || r.status == CellStatus::fail) {
+    const std::vector<std::string> failures = rejudge_failures(r);
+    if (r.status == CellStatus::pass && !failures.empty())
+      said = "pass", found = fmt::format("its metrics fail: {}", fmt::join(failures, "; "));
+    else if (r.status == CellStatus::fail && failures.empty())
+      said = r.known_failure ? "known failure" : "fail", found = "its metrics pass";
+    else if (r.status == CellStatus::fail && r.known_failure && r.known_reason.empty())
+      // The expectations file is not in the results, but every entry of it has a reason.
+      said = "known failure", found = "without the reason every expectation has";
+  } else if (r.status == CellStatus::skipped &&
+             (r.metrics.interior_pixels || r.metrics.covered_pixels || r.metrics.bad_pixels)) {
+    // A skipped cell is never compared, so it has no pixels counted.
+    said = "skipped", found = "it has the metrics of a compared cell";
+  }
+  if (said.empty()) return "";
+  const std::string note = fmt::format("shard said {}; {}", said, found);
+  r.status = CellStatus::fail;
+  r.known_failure = false;
+  r.known_reason.clear();
+  r.message = r.message.empty() ? note : note + " (its message: " + r.message + ")";
+  return note;
+}
+
 }  // namespace
 
-Result<RunReport> merge_shards(std::vector<RunReport> parts, const std::vector<std::string>& paths) {
+Result<RunReport> merge_shards(std::vector<RunReport> parts, const std::vector<std::string>& paths,
+                               std::vector<std::string>* rejudged) {
   RunReport merged;
   std::set<std::string> seen;
   std::map<int, std::string> shards;   // index -> the file that holds it
@@ -53,13 +84,15 @@ Result<RunReport> merge_shards(std::vector<RunReport> parts, const std::vector<s
     const auto bad = [&](std::string message) {
       return std::unexpected(Error{.message = std::move(message), .file = path, .stage = ErrorStage::merge});
     };
-    if (!part.run_id.empty()) {
-      if (merged.run_id.empty()) merged.run_id = part.run_id;
-      else if (merged.run_id != part.run_id)
-        return bad(fmt::format("run {} is not the run of the files before it ({}): another image size, mesh density, precision, reference, --param or "
-                               "compiler; merge the results of one run",
-                               part.run_id, merged.run_id));
-    }
+    // Without an identity a file would join any run.
+    if (part.run_id.empty())
+      return bad("no run_id: not results as 'shaderbed run --json' writes them (or from a version before run ids); "
+                 "merge the results of one run");
+    if (merged.run_id.empty()) merged.run_id = part.run_id;
+    else if (merged.run_id != part.run_id)
+      return bad(fmt::format("run {} is not the run of the files before it ({}): another image size, mesh density, "
+                             "precision, reference, --param or compiler; merge the results of one run",
+                             part.run_id, merged.run_id));
     for (const auto& [name, digest] : part.case_digests)
       if (const auto [it, added] = merged.case_digests.emplace(name, digest); !added && it->second != digest)
         return bad(fmt::format("case {} was read from another case file than in the files before it (digest {}, "
@@ -78,6 +111,8 @@ Result<RunReport> merge_shards(std::vector<RunReport> parts, const std::vector<s
     merged.wall_ms += part.wall_ms;
     for (CellResult& r : part.results) {
       if (!seen.insert(r.id()).second) return bad("cell " + r.id() + " is already in an earlier file");
+      if (const std::string note = rejudge(r); !note.empty() && rejudged)
+        rejudged->push_back(fmt::format("{}: {}: {}", path, r.id(), note));
       merged.results.push_back(std::move(r));
     }
   }

@@ -1,8 +1,10 @@
 #pragma once
 // Joins the results of a run's shards (or a CI matrix's jobs) into one report in the
-// canonical order of one whole run. Shards of different runs (another run id) are refused;
-// a missing shard, or a shard that was interrupted, leaves the merged report incomplete
-// (RunReport::interruption says which), so it cannot pass unnoticed.
+// canonical order of one whole run. Shards of different runs (another run id), or without a
+// run id, are refused; a missing shard, or a shard that was interrupted, leaves the merged
+// report incomplete (RunReport::interruption says which), so it cannot pass unnoticed. Each
+// compared cell is judged again from its metrics and tolerance (report/CellVerdict.h): a
+// status that disagrees with them (an edited file) becomes a failure that says so.
 #include <string>
 #include <vector>
 
@@ -11,8 +13,10 @@
 
 namespace shaderbed {
 
-// `paths` name the parts in errors. A cell in two parts, or parts of different runs, is an
-// Error; results written before run ids existed merge as before.
-Result<RunReport> merge_shards(std::vector<RunReport> parts, const std::vector<std::string>& paths);
+// `paths` name the parts in errors. A cell in two parts, parts of different runs, or a part
+// without a run id, is an Error. `rejudged` (when given) receives one line per cell whose
+// status disagreed with its metrics: "FILE: CELL: shard said pass; its metrics fail: ...".
+Result<RunReport> merge_shards(std::vector<RunReport> parts, const std::vector<std::string>& paths,
+                               std::vector<std::string>* rejudged = nullptr);
 
 }  // namespace shaderbed

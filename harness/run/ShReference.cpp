@@ -8,6 +8,7 @@
 
 #include "core/CacheSettings.h"
 #include "prt/ShCase.h"
+#include "report/CellVerdict.h"
 #include "run/ReferenceKinds.h"
 #include "run/ReferenceRender.h"
 
@@ -75,7 +76,7 @@ class ShReference final : public CellReference {
     }
     if (c_.approximation) {
       e.bound = c_.approximation->max_abs;
-      if (e.truncation > e.bound && r.status == CellStatus::pass) {
+      if (sh_approximation_exceeded(e) && r.status == CellStatus::pass) {
         r.status = CellStatus::fail;
         r.attribution = "model/reference";
         r.message = fmt::format("the SH approximation differs from the exact lighting integral by {:.3g} > {:.3g} "

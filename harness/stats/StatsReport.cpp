@@ -1,9 +1,8 @@
 #include "stats/StatsReport.h"
 #include "core/AtomicFile.h"
+#include "core/BoundedFile.h"
 
-#include <fstream>
 #include <set>
-#include <sstream>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -118,11 +117,10 @@ Result<StatsReport> from_json(const std::string& text) {
 }
 
 Result<StatsReport> read_stats_json(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) return std::unexpected(Error{.message = "cannot read stats JSON", .file = path, .stage = ErrorStage::stats});
-  std::stringstream ss;
-  ss << in.rdbuf();
-  auto r = from_json(ss.str());
+  // A regular file of bounded size only: `--baseline /dev/zero` or a FIFO is one error.
+  Result<std::string> text = read_bounded_file(path, "stats JSON", ErrorStage::stats, kMaxStatsBytes);
+  if (!text) return std::unexpected(text.error());
+  auto r = from_json(*text);
   if (!r) return std::unexpected(std::move(r.error()).in_file(path));
   return r;
 }

@@ -4,6 +4,7 @@
 // JSON layout: {"tool": {...}, "entries": [{"case", "variant", "language",
 // "stage", "spirv": {...}, "spirv_opt": {...}, "spirv_os": {...}, "glsl_lines", "nir",
 // "book"}]}. Each counts object also carries "extended_calls" ({"Pow": 1, ...}).
+#include <cstddef>
 #include <cstdio>
 #include <map>
 #include <optional>
@@ -43,6 +44,9 @@ struct StatsReport {
 
 std::string to_json(const StatsReport&);
 Result<StatsReport> from_json(const std::string& text);
+// The largest stats JSON read, far above what `stats` writes for the whole library.
+constexpr size_t kMaxStatsBytes = size_t(256) << 20;
+// Reads a `stats --json` file: only a regular file of at most kMaxStatsBytes; errors name it.
 Result<StatsReport> read_stats_json(const std::string& path);
 Result<void> write_text_file(const std::string& path, const std::string& text);
 

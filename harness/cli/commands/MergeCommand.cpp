@@ -1,6 +1,11 @@
 // `shaderbed merge A.json B.json ...`: joins shard results into one report, in the same
-// canonical order as one whole run.
+// canonical order as one whole run. A shard is a file anyone can edit: its cells are judged
+// again (report/ShardMerge.h), and its artefact paths are confined to its own folder for
+// the HTML page (report/ShardArtefacts.h).
+#include <map>
 #include <memory>
+#include <optional>
+#include <utility>
 #include <set>
 
 #include <fmt/format.h>
@@ -12,6 +17,7 @@
 #include "report/ConsoleReport.h"
 #include "report/JsonReport.h"
 #include "report/RunCoverage.h"
+#include "report/ShardArtefacts.h"
 #include "report/ShardMerge.h"
 
 namespace shaderbed {
@@ -34,20 +40,40 @@ Command add_merge_command(CLI::App& app) {
   return {cmd, [args] {
             if (!args->outputs.load_charts() || !args->outputs.check_writable()) return kExitBadInput;
             std::vector<RunReport> parts;
+            std::map<std::string, std::pair<std::string, std::string>> origin;   // cell id -> its file, its run folder
             for (const std::string& path : args->inputs) {
               auto part = read_json(path);
               if (!part) {
                 fmt::print(stderr, "shaderbed: {}\n", part.error().to_string());
                 return kExitBadInput;
               }
+              for (const CellResult& r : part->results) origin.emplace(r.id(), std::pair{path, part->out_dir});
               parts.push_back(std::move(*part));
             }
-            auto joined = merge_shards(std::move(parts), args->inputs);
+            std::vector<std::string> rejudged;
+            auto joined = merge_shards(std::move(parts), args->inputs, &rejudged);
             if (!joined) {
               fmt::print(stderr, "shaderbed: {}\n", joined.error().to_string());
               return kExitBadInput;
             }
             RunReport& merged = *joined;
+            for (const std::string& line : rejudged) fmt::print(stderr, "shaderbed: {}\n", line);
+            // The page reads and links only files inside each shard's own folder.
+            std::optional<RunReport> page;
+            std::vector<std::string> notes;
+            if (!args->outputs.html.empty()) {
+              page = merged;
+              std::vector<std::string> dropped;
+              for (CellResult& r : page->results) {
+                const auto& [file, out_dir] = origin.at(r.id());
+                for (std::string& d : confine_artefacts(r, file, out_dir)) dropped.push_back(std::move(d));
+              }
+              if (!dropped.empty())
+                notes.push_back(fmt::format("{} artefact path{} not shown: outside the folder of the results file that "
+                                            "names {}, e.g. {}",
+                                            dropped.size(), dropped.size() == 1 ? "" : "s", dropped.size() == 1 ? "it" : "them",
+                                            dropped.front()));
+            }
             const RunCoverage coverage = run_coverage(merged);
             if (args->console.view != ConsoleView::quiet) fmt::print("merged {} file{}: {} cells of {} case{}\n", args->inputs.size(), args->inputs.size() == 1 ? "" : "s",
                        merged.results.size(), coverage.cases, coverage.cases == 1 ? "" : "s");
@@ -56,7 +82,7 @@ Command add_merge_command(CLI::App& app) {
             if (!coverage.holes.empty())
               fmt::print("  no cells for {}: was a job of the matrix left out?\n", fmt::join(coverage.holes, ", "));
             print_console_report(merged, stdout, args->console);
-            if (!args->outputs.write(merged)) return kExitFail;
+            if (!args->outputs.write(merged, page ? &*page : nullptr, notes)) return kExitFail;
             return merged.acceptable() ? 0 : kExitFail;
           }};
 }

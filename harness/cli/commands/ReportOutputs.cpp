@@ -5,13 +5,18 @@
 
 #include <fmt/format.h>
 
-#include "core/ChildProcess.h"
+#include "core/BoundedFile.h"
 #include "core/WritablePath.h"
 #include "report/HtmlReport.h"
 #include "report/JsonReport.h"
 #include "report/JunitReport.h"
 
 namespace shaderbed {
+namespace {
+
+constexpr size_t kMaxChartBytes = size_t(64) << 20;   // far above any chart sweep draws
+
+}  // namespace
 
 void add_console_flags(CLI::App* cmd, ConsoleOptions& console) {
   auto table = [&console] { console.view = ConsoleView::table; };
@@ -41,7 +46,13 @@ void ReportOutputs::add_options(CLI::App* cmd) {
 bool ReportOutputs::load_charts() {
   loaded_charts.clear();
   for (const std::string& svg : charts) {
-    std::string text = read_text_file(svg);
+    // Bounded, regular files only: `--chart /dev/zero` or a FIFO is one error, not an abort or a wait.
+    Result<std::string> read = read_bounded_file(svg, "--chart file", ErrorStage::options, kMaxChartBytes);
+    if (!read) {
+      fmt::print(stderr, "shaderbed: {}\n", read.error().to_string());
+      return false;
+    }
+    std::string text = std::move(*read);
     // Only a self-contained SVG (gnuplot's, as sweep writes it) may go into the page as it is.
     if (text.find("<svg") == std::string::npos || text.find("<script") != std::string::npos) {
       fmt::print(stderr, "shaderbed: {}: --chart needs an SVG without scripts\n", svg);
@@ -72,7 +83,8 @@ std::vector<std::pair<std::string, std::string>> ReportOutputs::files() const {
   return written;
 }
 
-bool ReportOutputs::write(const RunReport& report) const {
+bool ReportOutputs::write(const RunReport& report, const RunReport* html_view,
+                          const std::vector<std::string>& html_notes) const {
   auto done = [](const Result<void>& ok, const char* what, const std::string& path) {
     if (!ok) {
       fmt::print(stderr, "shaderbed: {}\n", ok.error().to_string());
@@ -85,7 +97,7 @@ bool ReportOutputs::write(const RunReport& report) const {
   if (!json.empty()) ok &= done(write_json(report, json), "results", json);
   if (!junit.empty()) ok &= done(write_junit(report, junit), "junit", junit);
   if (!html.empty()) {
-    auto written = write_html(report, html, HtmlOptions{.charts = loaded_charts});
+    auto written = write_html(html_view ? *html_view : report, html, HtmlOptions{.charts = loaded_charts, .notes = html_notes});
     ok &= done(written ? Result<void>{} : std::unexpected(written.error()), "html",
                (std::filesystem::path(html) / "index.html").string());
   }

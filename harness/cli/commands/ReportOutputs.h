@@ -30,7 +30,9 @@ struct ReportOutputs {
   // an input: (path, "--json"), ...
   std::vector<std::pair<std::string, std::string>> files() const;
   // Writes what was asked for; prints where; false (after printing the error) on failure.
-  bool write(const RunReport& report) const;
+  // `html_view` (merge): the report the HTML page shows instead, with `html_notes` on it.
+  bool write(const RunReport& report, const RunReport* html_view = nullptr,
+             const std::vector<std::string>& html_notes = {}) const;
 };
 
 }  // namespace shaderbed
