@@ -79,7 +79,8 @@ TEST(IsolatedCompile, StatsReportsTheCrashAsAnErrorRowAndCountsTheOtherCases) {
   expect_reported(status, text, "shaderbed: stats: crash/pixel/hlsl/");
   EXPECT_EQ(status, 1) << text;
   int good = 0, crashed = 0;
-  for (const nlohmann::json& e : read_json(json_path)["entries"]) {
+  const nlohmann::json report = read_json(json_path);
+  for (const nlohmann::json& e : report.at("entries")) {
     if (e["case"] == "good") {
       EXPECT_FALSE(e.contains("error")) << e.dump();
       EXPECT_GT(e["spirv"]["total"].get<int>(), 0) << e.dump();
