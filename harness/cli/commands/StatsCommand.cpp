@@ -66,7 +66,6 @@ Command add_stats_command(CLI::App& app) {
             } else {
               if (args->options.cases_dir.empty()) args->options.cases_dir = default_cases_dir();
               isolate_compiles();   // a shader glslang crashes on is an error row; the others are counted
-
               report = stats::collect_stats(args->options);
             }
             if (!report) {
