@@ -8,6 +8,7 @@
 #include "author/ShaderText.h"
 #include "compile/Compiler.h"
 #include "compile/EffectFile.h"
+#include "compile/IsolatedCompile.h"
 #include "compile/ShaderLabFrontEnd.h"
 #include "scene/CaseProgram.h"
 
@@ -216,6 +217,9 @@ Result<std::vector<SurveyedLanguage>> survey_shaders(const std::vector<std::stri
     if (program_source) program_source->effect = {.technique = s.files.technique, .pass = s.files.pass, .named_in = "", .line = 0};
     Result<CompiledProgram> program = program_source ? compile_program(*program_source, false)
                                                      : Result<CompiledProgram>(std::unexpected(program_source.error()));
+    // A compiler that crashed or hung on the shader (compile/IsolatedCompile.h) is no guess
+    // to write down: the user's shader must change first.
+    if (!program && compiler_did_not_finish(program.error())) return std::unexpected(program.error());
     if (program)
       collect_reflection(s, *program, program_source->vertex.text, program_source->fragment.text);
     else

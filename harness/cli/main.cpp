@@ -47,6 +47,7 @@ int main(int argc, char** argv) {
                                           shaderbed::add_init_command(app),
                                           shaderbed::add_port_command(app), shaderbed::add_explain_command(app),
                                           shaderbed::add_cell_worker_command(app),
+                                          shaderbed::add_compile_stages_command(app),
                                           shaderbed::add_bench_command(app), shaderbed::add_devices_command(app),
                                           shaderbed::add_view_command(app), shaderbed::add_view_compile_command(app),
                                           shaderbed::add_sh_command(app)};

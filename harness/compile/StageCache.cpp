@@ -7,6 +7,7 @@
 
 #include "compile/CompileCache.h"
 #include "compile/CrossGlsl.h"
+#include "compile/IsolatedCompile.h"
 #include "core/CacheSettings.h"
 
 namespace shaderbed {
@@ -39,8 +40,17 @@ Result<ShaderModule> compile_stage_cached(Language language, const ShaderSource&
   }
   // Compiled outside the lock so workers compile different stages at the same time; two
   // workers racing on one stage both compile it, and the results are identical.
-  Result<ShaderModule> module = [&] {
-    if (std::optional<CompileCache> disk = disk_cache()) return disk->stage(language, source, target);
+  Result<ShaderModule> module = [&]() -> Result<ShaderModule> {
+    std::optional<CompileCache> disk = disk_cache();
+    // Isolated (IsolatedCompile.h): a disk hit starts no child; a miss is compiled there,
+    // and the child stores it on disk.
+    if (compiles_isolated()) {
+      if (disk)
+        if (std::optional<ShaderModule> hit = disk->find_stage(language, source, target)) return std::move(*hit);
+      count_compile_run();
+      return compile_stage_isolated(language, source, target);
+    }
+    if (disk) return disk->stage(language, source, target);
     count_compile_run();
     return compile_stage(language, source, target);
   }();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 #include <set>
 
 #include <fmt/format.h>
@@ -117,6 +118,21 @@ void mark_pareto_fronts(std::vector<SweepPoint>& points) {
 }  // namespace
 
 Result<SweepResult> run_sweep(const SweepOptions& o) {
+  // Counted before anything is loaded or drawn (and before the combinations are listed).
+  const size_t precision_count = std::max<size_t>(1, o.precisions.size());
+  size_t points = precision_count;
+  std::vector<std::string> factors;
+  for (const SweepAxis& a : o.axes) {
+    const size_t n = std::max<size_t>(1, a.values.size());
+    points = points > std::numeric_limits<size_t>::max() / n ? std::numeric_limits<size_t>::max() : points * n;
+    factors.push_back(fmt::format("{} {}", n, a.name));
+  }
+  if (points > o.max_points)
+    return fail(ErrorStage::sweep,
+                fmt::format("the axes make {} points ({} x {} precision{}), more than the limit of {}: nothing drawn; "
+                            "--max-points {} raises the limit if you mean it",
+                            points, fmt::join(factors, " x "), precision_count, precision_count == 1 ? "" : "s",
+                            o.max_points, points));
   const std::string dir = o.cases_dir.empty() ? default_cases_dir() : o.cases_dir;
   auto cases = load_selected_cases(dir, {o.case_name});
   if (!cases) return std::unexpected(cases.error());
@@ -160,7 +176,13 @@ Result<SweepResult> run_sweep(const SweepOptions& o) {
 
   SweepResult result{o.case_name, o.axes, precisions, o.size, o.timing, {}, {}};
   const auto start = std::chrono::steady_clock::now();
+  result.steps_planned = steps.size();
   for (size_t s = 0; s < steps.size(); ++s) {
+    if (o.stop_requested)
+      if (std::string signal = o.stop_requested(); !signal.empty()) {
+        result.interrupted_by = std::move(signal);
+        break;
+      }
     const Step& step = steps[s];
     RunOptions point = run;
     point.select.variants = step.variants;
@@ -203,6 +225,7 @@ Result<SweepResult> run_sweep(const SweepOptions& o) {
       }
       result.cells.results.push_back(std::move(r));
     }
+    result.steps_done = s + 1;
   }
   if (o.on_step) o.on_step(steps.size(), steps.size(), "");
   result.cells.wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

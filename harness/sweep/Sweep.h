@@ -25,6 +25,8 @@
 
 namespace shaderbed {
 
+inline constexpr size_t kDefaultMaxSweepPoints = 10000;   // --max-points
+
 struct SweepOptions {
   std::string cases_dir;                 // "" = default_cases_dir()
   std::string case_name;
@@ -37,6 +39,12 @@ struct SweepOptions {
   int size = 256;
   TimingRequest timing{.warmup = 2, .runs = 9};   // 9 runs: the median's CI covers 96 %
   std::function<void(size_t done, size_t total, const std::string& what)> on_step;   // progress
+  // Combinations of axis values x precisions allowed before anything is drawn: the axes
+  // multiply, and 121,000 points is most of two hours. Over it, run_sweep refuses up front.
+  size_t max_points = kDefaultMaxSweepPoints;
+  // Asked before each point: a signal name ("SIGINT") ends the sweep there, with the points
+  // finished so far (SweepResult::interrupted_by); "" goes on.
+  std::function<std::string()> stop_requested;
 };
 
 struct SweepPoint {
@@ -70,6 +78,8 @@ struct SweepResult {
   TimingRequest timing;
   std::vector<SweepPoint> points;
   RunReport cells;                             // every cell drawn, for the HTML report
+  std::string interrupted_by;                  // "SIGINT", "SIGTERM": stopped early; "" = every point drawn
+  size_t steps_done = 0, steps_planned = 0;    // points (combinations x precisions) drawn and planned
 };
 
 Result<SweepResult> run_sweep(const SweepOptions& options);

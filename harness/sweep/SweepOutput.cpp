@@ -84,6 +84,11 @@ std::string sweep_json(const SweepResult& sweep, const std::vector<SceneChart>& 
   for (const SweepAxis& a : sweep.axes) axes.push_back({{"name", a.name}, {"values", a.values}});
   j["axes"] = std::move(axes);
   j["precisions"] = sweep.precisions;
+  // A sweep stopped by a signal keeps the points it finished, and says so.
+  j["interrupted"] = !sweep.interrupted_by.empty();
+  if (!sweep.interrupted_by.empty()) j["interrupted_by"] = sweep.interrupted_by;
+  j["steps_done"] = sweep.steps_done;
+  j["steps_planned"] = sweep.steps_planned;
   j["tools"] = json_tools(sweep.cells.tools);
   ojson points = ojson::array();
   for (const SweepPoint& p : sweep.points) {

@@ -28,6 +28,7 @@ Command add_init_command(CLI::App& app);
 Command add_port_command(CLI::App& app);
 Command add_explain_command(CLI::App& app);        // one pixel of a cell's shader, line by line
 Command add_cell_worker_command(CLI::App& app);   // hidden: an isolated run's worker process
+Command add_compile_stages_command(CLI::App& app);   // hidden: compile/IsolatedCompile.h's child process
 Command add_view_command(CLI::App& app);
 Command add_view_compile_command(CLI::App& app);  // hidden: the viewer's compile probe (ViewCommand.cpp)
 Command add_sh_command(CLI::App& app);            // sh project|transfer|eval (ShCommand.cpp)

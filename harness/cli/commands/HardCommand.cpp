@@ -5,10 +5,12 @@
 // significance at the worst pixel.
 #include <fstream>
 #include <memory>
+#include <set>
 
 #include <fmt/format.h>
 
 #include "cli/commands/Command.h"
+#include "compile/IsolatedCompile.h"
 #include "hard/HardOutput.h"
 #include "hard/HardRunner.h"
 #include "core/AtomicFile.h"
@@ -38,6 +40,7 @@ Command add_hard_command(CLI::App& app) {
   cmd->add_option("--json", *json_path, "Write the report as JSON");
   cmd->add_option("--out", o->out_dir, "Write images (render, reference, relative error, value mask) here");
   return {cmd, [o, json_path] {
+            isolate_compiles();   // a user's case may crash glslang: an error, not the end of the command
             o->progress = [](const std::string& step) { fmt::print(stderr, "hard: {}\n", step); };
             // A path to a .toml file is the user's own case; a bare name is the library's.
             std::vector<std::string> names;
@@ -50,6 +53,10 @@ Command add_hard_command(CLI::App& app) {
               return kExitBadInput;
             }
             fmt::print("{}", hard::console_report(*report));
+            std::set<std::string> errors;   // each once: a shader that does not compile errors every row alike
+            for (const hard::HardRow& r : report->rows)
+              if (r.status == CellStatus::error && errors.insert(r.message).second)
+                fmt::print(stderr, "shaderbed: hard: {}\n", r.message);
             if (!json_path->empty()) {
               if (auto ok = write_file_atomically(*json_path, hard::json_report(*report).dump(2) + "\n", "the hard-case JSON");
                   !ok) {

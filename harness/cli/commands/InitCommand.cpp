@@ -13,6 +13,7 @@
 #include "author/ShaderSurvey.h"
 #include "cli/commands/InitGuessCheck.h"
 #include "cli/commands/Command.h"
+#include "compile/IsolatedCompile.h"
 #include "core/AtomicFile.h"
 #include "core/WritablePath.h"
 #include "report/ConsoleReport.h"
@@ -35,7 +36,7 @@ struct InitArguments {
 };
 
 int bad_input(const std::string& message) {
-  fmt::print(stderr, "shaderbed init: {}\n", message);
+  fmt::print(stderr, "shaderbed: init: {}\n", message);
   return kExitBadInput;
 }
 
@@ -70,6 +71,7 @@ std::vector<std::string> failures(const RunReport& report, bool unconfirmed) {
 }
 
 int run_init(const InitArguments& args) {
+  isolate_compiles();   // the survey compiles the user's shaders: a glslang crash is bad input, not ours
   std::optional<Language> forced;
   if (!args.language.empty()) {
     auto l = parse_language(args.language);

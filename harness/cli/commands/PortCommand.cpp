@@ -8,6 +8,7 @@
 #include "author/PortCase.h"
 #include "cli/commands/Command.h"
 #include "cli/commands/ReportOutputs.h"
+#include "compile/IsolatedCompile.h"
 #include "core/ThisExecutable.h"
 #include "core/WritablePath.h"
 #include "report/ConsoleProgress.h"
@@ -69,6 +70,7 @@ Command add_port_command(CLI::App& app) {
               fmt::print(stderr, "shaderbed: {}\n", e.to_string());
               return kExitBadInput;
             };
+            isolate_compiles();   // plan_port compiles the original and the port: a glslang crash is bad input
             auto target = parse_port_target(args->to);
             if (!target) return bad_input(target.error());
             if (!args->outputs.load_charts() || !args->outputs.check_writable()) return kExitBadInput;

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands/Command.h"
+#include "compile/IsolatedCompile.h"
 #include "run/Runner.h"
 #include "stats/Baseline.h"
 #include "stats/Collect.h"
@@ -64,6 +65,7 @@ Command add_stats_command(CLI::App& app) {
               report = stats::read_stats_json(args->from);
             } else {
               if (args->options.cases_dir.empty()) args->options.cases_dir = default_cases_dir();
+              isolate_compiles();   // a shader glslang crashes on is an error row; the others are counted
               report = stats::collect_stats(args->options);
             }
             if (!report) {

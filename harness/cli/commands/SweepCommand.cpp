@@ -4,13 +4,16 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <set>
 #include <sstream>
 
 #include <fmt/format.h>
 
 #include "cli/commands/Command.h"
+#include "compile/IsolatedCompile.h"
 #include "run/Runner.h"
 #include "report/HtmlReport.h"
+#include "sweep/StopSignals.h"
 #include "sweep/Sweep.h"
 #include "sweep/SweepOutput.h"
 
@@ -62,6 +65,12 @@ Command add_sweep_command(CLI::App& app) {
                   "(STEM-1, STEM-2, ...) when a case parameter is swept");
   cmd->add_option("--html", args->html, "Write an HTML report of every cell with the chart to this folder");
   cmd->add_option("--cases-dir", o.cases_dir, "Folder of case files")->default_str(default_cases_dir());
+  cmd->add_option("--max-points", o.max_points,
+                  "Refuse a sweep whose axes (times precisions) make more points than this, before drawing any")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  cmd->footer("SIGINT or SIGTERM stops the sweep after the point being drawn and writes --json with the points so "
+              "far, marked \"interrupted\" (exit 130 or 143); a second signal ends it at once.");
 
   return {cmd, [args] {
             SweepOptions options = args->options;
@@ -82,12 +91,30 @@ Command add_sweep_command(CLI::App& app) {
               if (tty) fmt::print(stderr, "\r[{}/{}] {:<60}", done + 1, total, what);
               else fmt::print(stderr, "[{}/{}] {}\n", done + 1, total, what);
             };
+            // The case's shaders compile in a child process: a glslang crash is an error point.
+            isolate_compiles();
+            const StopSignals signals;
+            options.stop_requested = [&signals] { return signals.caught(); };
             auto sweep = run_sweep(options);
             if (!sweep) {
               fmt::print(stderr, "shaderbed: {}\n", sweep.error().to_string());
               return kExitBadInput;
             }
             print_sweep_table(*sweep, stdout);
+            std::set<std::string> errors;   // each once: a shader that does not compile errors every point alike
+            for (const SweepPoint& p : sweep->points)
+              if (p.status == CellStatus::error && errors.insert(p.message).second)
+                fmt::print(stderr, "shaderbed: sweep: {}\n", p.message);
+            if (!sweep->interrupted_by.empty()) {
+              // Only what is quick: the points so far, then the status a shell expects.
+              fmt::print(stderr, "shaderbed: sweep: interrupted by {} after {} of {} points{}\n", sweep->interrupted_by,
+                         sweep->steps_done, sweep->steps_planned,
+                         args->json.empty() ? "" : "; the points so far are in " + args->json);
+              if (!args->json.empty())
+                if (auto ok = write_sweep_json(*sweep, {}, args->json); !ok)
+                  fmt::print(stderr, "shaderbed: {}\n", ok.error().to_string());
+              return signals.exit_status();
+            }
 
             std::string chart_stem = args->chart;
             if (chart_stem.empty() && !args->html.empty())
