@@ -34,7 +34,7 @@ int signal_pipe[2] = {-1, -1};
 volatile sig_atomic_t caught_signal = 0;
 
 void on_signal(int signal) {
-  caught_signal = signal;
+  if (caught_signal == 0) caught_signal = signal;   // the first one is what stopped the run
   const char byte = 1;
   [[maybe_unused]] const ssize_t n = ::write(signal_pipe[1], &byte, 1);
 }
@@ -50,7 +50,10 @@ class SignalGuard {
     if (::pipe2(signal_pipe, O_CLOEXEC | O_NONBLOCK) != 0) signal_pipe[0] = signal_pipe[1] = -1;
     struct sigaction handler {};
     handler.sa_handler = on_signal;
+    // Each handler blocks the others: signals pending together run one after another,
+    // so the first sent is the one recorded.
     sigemptyset(&handler.sa_mask);
+    for (int s : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&handler.sa_mask, s);
     ::sigaction(SIGINT, &handler, &old_int_);
     ::sigaction(SIGTERM, &handler, &old_term_);
     ::sigaction(SIGHUP, &handler, &old_hup_);
@@ -102,6 +105,7 @@ struct Worker {
 // How many workers in a row may end before their hello before a slot gives up: the cells
 // it had left become errors and the run goes on.
 constexpr int kStartTries = 3;
+constexpr double kStartTimeoutFloor_s = 30;
 
 // What a worker was doing in each step, for the cell's message.
 std::string doing(const std::string& step) {
@@ -277,6 +281,9 @@ class Supervisor {
     if (step.empty()) return 0;   // idle: no group sent
     if (step == "compile") return o_.workers.compile_timeout_s;
     if (step == "draw") return o_.workers.draw_timeout_s;
+    // Loading the drivers takes seconds on a busy machine: a --step-timeout short enough
+    // for judging a small image must not kill every start-up.
+    if (step == "start") return std::max(step_timeout_s(), kStartTimeoutFloor_s);
     return step_timeout_s();
   }
 
