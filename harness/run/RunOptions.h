@@ -64,11 +64,12 @@ struct WorkerSupervision {
   size_t worker_memory_mb = 8192;  // a worker's address space (a run at 256 px peaks near 1.1 GB)
 };
 
-// The default deadline of a step other than compiling and drawing: a minute at 256 px,
-// growing with the pixels (a CPU reference, a twin and the judging scale with them), so a
-// legitimate 4096 px run is not killed and a stopped worker is still noticed.
+// The default deadline of a step other than compiling and drawing: a minute up to 512 px,
+// growing with the pixels (a CPU reference, a twin and the judging scale with them): 16
+// minutes at 2048 px, where a model reference takes about 4 s and a float twin about 20 s,
+// so a legitimate run on a busy machine is not killed and a stopped worker is noticed.
 inline double step_timeout_for_size(int size) {
-  const double pixels = double(size) * double(size) / (256.0 * 256.0);
+  const double pixels = double(size) * double(size) / (512.0 * 512.0);
   return 60.0 * (pixels > 1 ? pixels : 1);
 }
 

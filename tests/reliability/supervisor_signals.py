@@ -7,7 +7,9 @@ hello), SIGSTOP a random worker (the step deadline must end it), SIGHUP the run,
 it twice in quick succession. Whatever happens, the run must end by itself (no hang) and
 write its JSON report: complete, or marked incomplete after a signal to the run.
 
-  tests/reliability/supervisor_signals.py [--binary build/harness/shaderbed] [--trials 40]
+  tests/reliability/supervisor_signals.py SOURCE BINARY [--slow] [--trials N] [--seed S]
+
+(as scripts/test --reliability calls it: 40 trials with --slow, 4 without).
 """
 import argparse
 import json
@@ -79,10 +81,13 @@ def trial(binary, rng, folder):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--binary", default=os.path.join("build", "harness", "shaderbed"))
-    parser.add_argument("--trials", type=int, default=40)
+    parser.add_argument("source", help="the source folder (unused: the library's cases are the binary's)")
+    parser.add_argument("binary")
+    parser.add_argument("--slow", action="store_true", help="40 trials rather than 4")
+    parser.add_argument("--trials", type=int)
     parser.add_argument("--seed", type=int, default=1)
     args = parser.parse_args()
+    args.trials = args.trials or (40 if args.slow else 4)
     rng = random.Random(args.seed)
     failures = []
     with tempfile.TemporaryDirectory(prefix="supervisor-signals-") as folder:

@@ -90,7 +90,7 @@ Command add_run_command(CLI::App& app) {
   cmd->add_option("--step-timeout", run.workers.step_timeout_s,
                   "Seconds any other step of a worker may take (start-up, the reference, judging, writing images, "
                   "twin, divergence) before it is killed: the cell is 'error: timeout in <step>'; 0 = by the image "
-                  "size (60 s at 256 px, growing with the pixels)")
+                  "size (60 s up to 512 px, growing with the pixels: 16 min at 2048)")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 86400.0));
   cmd->add_option("--worker-memory", run.workers.worker_memory_mb,
