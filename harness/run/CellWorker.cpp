@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <exception>
+#include <new>
 #include <set>
 #include <sstream>
 #include <string>
@@ -14,6 +16,7 @@
 #include "run/GroupRunner.h"
 #include "run/Runner.h"
 #include "run/Toolchain.h"
+#include "run/WorkerFaultHook.h"
 #include "run/WorkerOptions.h"
 #include "run/WorkerProtocol.h"
 #include "scene/NameFilter.h"
@@ -44,9 +47,38 @@ bool read_line(std::FILE* in, std::string& line) {
   return !line.empty();
 }
 
+// An allocation that fails past the worker's address-space limit ends it with an exit
+// status the supervisor names "out of memory", not a crash of whatever step was running;
+// also when it escapes through a noexcept frame or a library's thread into terminate().
+[[noreturn]] void out_of_memory_or_abort() {
+  if (const std::exception_ptr e = std::current_exception()) {
+    try {
+      std::rethrow_exception(e);
+    } catch (const std::bad_alloc&) {
+      _exit(kWorkerOutOfMemoryExit);
+    } catch (...) {
+    }
+  }
+  std::abort();
+}
+
+int serve_cells_unguarded(std::FILE* commands, int events_fd);
+
 }  // namespace
 
 int serve_cells(std::FILE* commands, int events_fd) {
+  std::set_terminate(out_of_memory_or_abort);
+  try {
+    return serve_cells_unguarded(commands, events_fd);
+  } catch (const std::bad_alloc&) {
+    _exit(kWorkerOutOfMemoryExit);   // no allocation here: the supervisor reads the status
+  }
+}
+
+namespace {
+
+int serve_cells_unguarded(std::FILE* commands, int events_fd) {
+  const WorkerFaultHook fault = WorkerFaultHook::from_environment();
   std::string line;
   if (!read_line(commands, line)) return 2;
   auto decoded = decode_worker_options(line);
@@ -64,6 +96,7 @@ int serve_cells(std::FILE* commands, int events_fd) {
   std::vector<BackendSlot> backends = start_backends((*plan)->backend_names);
   RunReport hello;
   hello.tools = toolchain(backends);
+  fault.at("start");
   send(events_fd, "hello " + to_json_line(hello));
   auto stored = load_stored_references(options.cell.against_dir, options.cell.size, (*plan)->cases, hello.tools);
   if (!stored) {
@@ -73,8 +106,9 @@ int serve_cells(std::FILE* commands, int events_fd) {
   SceneSetup scene;
   scene.width = scene.height = options.cell.size;
   GroupRunner runner(options.cell, scene, *stored, wanted((*plan)->backend_names, "gl"),
-                     [events_fd](const std::string& cell, const char* step) {
+                     [events_fd, &fault](const std::string& cell, const char* step) {
                        send(events_fd, fmt::format("step {} {}", cell, step));
+                       fault.at(step);
                      });
   const CompileCacheCounts before = compile_cache_counts();
 
@@ -100,5 +134,7 @@ int serve_cells(std::FILE* commands, int events_fd) {
   }
   return 0;
 }
+
+}  // namespace
 
 }  // namespace shaderbed

@@ -24,6 +24,7 @@
 #include "run/CellDraw.h"
 #include "run/CellDivergence.h"
 #include "run/CellTwins.h"
+#include "run/LruCache.h"
 #include "run/LutDomain.h"
 #include "run/ProgramArtefacts.h"
 #include "run/ProgramCache.h"
@@ -75,6 +76,9 @@ struct GroupRunner::Impl final : GroupDrawer {
   std::vector<CellResult> run(const CellGroup& g) {
     const Case& c = *g.c;
     group_ = &g;
+    group_label_ = c.name + "/" + g.variant->name + "/" + g.shape;
+    // An isolated run gives every step a deadline and names the step a hung worker was in.
+    announce(group_label_, "reference");
     twins_.begin_group();
     divergences_.begin_group();
     const std::string mesh_key = g.shape + (settings_.mesh_slices > 0 ? "/" + std::to_string(settings_.mesh_slices)
@@ -139,6 +143,7 @@ struct GroupRunner::Impl final : GroupDrawer {
       }
       r.time_ms["reference"] = reference_ms;
       r.scene_hash = scene_hash;
+      if (image) announce(r.id(), "write");
       Result<void> judged = !image ? Result<void>(std::unexpected(image.error())) : save_image(*image, r);
       if (judged && group_image) {
         judged = *group_image ? judge_cell(*image, **group_image, classes_, dir, false, r)
@@ -159,6 +164,7 @@ struct GroupRunner::Impl final : GroupDrawer {
           r.message = "the reference: every other cell of this case is judged against this render of the original";
         if (explain_ && r.id() == explain_->first) explain_pixel(g, cell, r, *image, group_image, reference.get());
         if (twins_.enabled()) {
+          announce(r.id(), "twin");
           r.twin = twins_.figures(*this, *g.variant, cell, r, *image, group_image && *group_image ? &**group_image : nullptr);
           // A note on a passing cell too: desktop drivers hide what a 16-bit device shows.
           if (!r.twin->precision_note.empty()) r.warnings.push_back("precision: " + r.twin->precision_note);
@@ -168,6 +174,7 @@ struct GroupRunner::Impl final : GroupDrawer {
       }
       results.push_back(std::move(r));
     }
+    announce(group_label_, "attribution");
     if (!group_image) {
       explain(*reference, g, mesh, results, images, rendered_cells, nullptr, own_references);
     } else if (*group_image) {
@@ -205,9 +212,7 @@ struct GroupRunner::Impl final : GroupDrawer {
                      const Variation& variation = {}) override {
     const Case& c = *group_->c;
     // An isolated run times these steps and blames a crash on the step and cell named last.
-    const auto step = [&](const char* what) {
-      if (on_step_) on_step_(r.id(), what);
-    };
+    const auto step = [&](const char* what) { announce(r.id(), what); };
     step("compile");
     const CachedProgram& compiled = programs_.get(c, variant, cell.language);
     if (!compiled.program) return std::unexpected(compiled.program.error());
@@ -279,6 +284,7 @@ struct GroupRunner::Impl final : GroupDrawer {
         explain_cell(images[i], *group_image, classes_, evidence, r);
         // Where the shader departs from its original, or from the model's quantities.
         if (!r.reference.is_reference) {
+          announce(r.id(), "divergence");
           const auto t0 = Clock::now();
           r.divergence = divergences_.locate(*this, g, g.cells[rendered[i]], r, images[i], *group_image, classes_, reference);
           if (r.divergence) r.time_ms["divergence"] = ms_since(t0);   // the first cell of a variant and language pays it
@@ -424,8 +430,17 @@ struct GroupRunner::Impl final : GroupDrawer {
   Result<const Texture*> variant_lut(const Case& c, const Variant& variant) {
     if (variant.lut.empty()) return nullptr;
     const std::string key = c.name + "/" + variant.name;
-    if (!luts_.contains(key)) luts_.emplace(key, generate_lut(variant.lut, c.params));
-    const Result<Texture>& texture = luts_.at(key);
+    const Result<Texture>* found = luts_.find(key);
+    if (!found) {
+      Result<Texture> made = generate_lut(variant.lut, c.params);
+      size_t bytes = 1024;
+      if (made) {
+        bytes += made->texels.size() * sizeof(float);
+        for (const std::vector<float>& level : made->mip_levels) bytes += level.size() * sizeof(float);
+      }
+      found = &luts_.put(key, std::move(made), bytes);
+    }
+    const Result<Texture>& texture = *found;
     if (!texture) return std::unexpected(Error(texture.error()).in_file(c.path));
     return &*texture;
   }
@@ -434,13 +449,16 @@ struct GroupRunner::Impl final : GroupDrawer {
   // cell of the variant asks), for the unused-binding check.
   const std::vector<std::string>& other_sources(const Case& c, const Variant& variant, Language language) {
     const std::string key = c.name + "/" + variant.name + "/" + to_string(language);
-    auto [it, added] = other_sources_.try_emplace(key);
-    if (added)
-      for (const Variant& other : c.variants)
-        if (&other != &variant && other.shaders.contains(language))
-          for (const std::string* file : {&other.shaders.at(language).vertex, &other.shaders.at(language).fragment})
-            it->second.push_back(read_bounded_file(*file, "shader file", ErrorStage::compile).value_or(""));
-    return it->second;
+    if (const std::vector<std::string>* found = other_sources_.find(key)) return *found;
+    std::vector<std::string> texts;
+    size_t bytes = 0;
+    for (const Variant& other : c.variants)
+      if (&other != &variant && other.shaders.contains(language))
+        for (const std::string* file : {&other.shaders.at(language).vertex, &other.shaders.at(language).fragment}) {
+          texts.push_back(read_bounded_file(*file, "shader file", ErrorStage::compile).value_or(""));
+          bytes += texts.back().size() + sizeof(std::string);
+        }
+    return other_sources_.put(key, std::move(texts), bytes);
   }
 
   // `--save-images DIR`: the render, whole, for later runs to be judged against.
@@ -473,6 +491,7 @@ struct GroupRunner::Impl final : GroupDrawer {
   // reference of the cell's own is written beside the cell's render.
   Result<void> judge_cell(const Image& image, const ReferenceImage& reference, const std::vector<PixelClass>& classes,
                           const fs::path& dir, bool own_reference, CellResult& r) {
+    announce(r.id(), "judge");
     const auto t0 = Clock::now();
     const Comparison cmp = compare_images(image, reference,
                                           {r.interior_threshold, r.silhouette_threshold, r.interior_threshold_rel,
@@ -487,6 +506,7 @@ struct GroupRunner::Impl final : GroupDrawer {
     // --out was 0.4 GB at 256 px, nearly all of it passing cells).
     const bool kept = settings_.keep_images == "all" || (settings_.keep_images == "failing" && !cmp.pass);
     if (dir.empty() || !kept) return {};
+    announce(r.id(), "write");
     const std::string stem = fmt::format("{}-{}-{}", r.language, r.backend, r.path);
     r.artefacts.render_exr = (dir / (stem + ".exr")).string();
     r.artefacts.render_png = (dir / (stem + ".png")).string();
@@ -524,15 +544,22 @@ struct GroupRunner::Impl final : GroupDrawer {
     return {};
   }
 
+  void announce(const std::string& id, const char* step) const {
+    if (on_step_) on_step_(id, step);
+  }
+
   const CellSettings settings_;
   const SceneSetup& scene_;
   StepObserver on_step_;
+  std::string group_label_;   // case/variant/shape: the steps of the group as a whole
   ReferenceKinds references_;
   ProgramCache programs_;
   std::map<std::string, Mesh> meshes_;              // shape/tessellation
   std::map<std::string, double> areas_;             // shape/tessellation: projected pixels
-  std::map<std::string, Result<Texture>> luts_;     // case/variant
-  std::map<std::string, std::vector<std::string>> other_sources_;   // by case/variant/language
+  // Bounded: a case of thousands of variants would otherwise keep a LUT per variant and,
+  // per variant, the texts of all the others (quadratic in the variants).
+  LruCache<Result<Texture>> luts_{64, size_t(256) << 20};   // case/variant
+  LruCache<std::vector<std::string>> other_sources_{16, size_t(64) << 20};   // by case/variant/language
   std::optional<Result<void>> group_reference_written_;   // the group's reference.png, once written
   // The current group's.
   const CellGroup* group_ = nullptr;
@@ -550,6 +577,7 @@ struct GroupRunner::Impl final : GroupDrawer {
   // reference, traced against the context of divergence_pixels.
   void explain_pixel(const CellGroup& g, const PlannedCell& cell, const CellResult& r, const Image& image,
                      const Result<ReferenceImage>* group_image, const CellReference* reference) {
+    announce(r.id(), "divergence");
     std::vector<twin::PixelAt> context;
     std::optional<ReferenceImage> own;
     const ReferenceImage* against = group_image && *group_image ? &**group_image : nullptr;

@@ -21,7 +21,9 @@ namespace shaderbed {
 class GroupRunner {
  public:
   // `gl_programs`: compile GL-target modules too (false: no cell of the run draws on GL).
-  // `on_step`: told before and after each untrusted step of a cell (may be empty).
+  // `on_step`: told before each step, of a cell (compile, draw, judge, write, twin,
+  // divergence) or, with the group's case/variant/shape for a cell id, of the group as a
+  // whole (reference, attribution); may be empty.
   GroupRunner(const CellSettings& settings, const SceneSetup& scene, const StoredReferences& stored, bool gl_programs,
               StepObserver on_step = {});
   ~GroupRunner();

@@ -28,19 +28,21 @@ namespace shaderbed {
 namespace {
 
 
-// ---- signals: SIGINT/SIGTERM end the run with what it has --------------------------------
+// ---- signals: SIGINT, SIGTERM and SIGHUP end the run with what it has -------------------
 
 int signal_pipe[2] = {-1, -1};
 volatile sig_atomic_t caught_signal = 0;
 
 void on_signal(int signal) {
-  caught_signal = signal;
+  if (caught_signal == 0) caught_signal = signal;   // the first one is what stopped the run
   const char byte = 1;
   [[maybe_unused]] const ssize_t n = ::write(signal_pipe[1], &byte, 1);
 }
 
-// Catches SIGINT and SIGTERM into a pipe poll() watches, and ignores SIGPIPE (a worker that
-// died is noticed on its events pipe, not by a signal to us); restores all three after.
+// Catches SIGINT, SIGTERM and SIGHUP into a pipe poll() watches, and ignores SIGPIPE (a
+// worker that died is noticed on its events pipe, not by a signal to us). Restores them
+// after, except once a signal ended the run: then repeats (a second Ctrl-C, a terminal
+// closing after it) are ignored, so the partial report is written before the process ends.
 class SignalGuard {
  public:
   SignalGuard() {
@@ -48,16 +50,24 @@ class SignalGuard {
     if (::pipe2(signal_pipe, O_CLOEXEC | O_NONBLOCK) != 0) signal_pipe[0] = signal_pipe[1] = -1;
     struct sigaction handler {};
     handler.sa_handler = on_signal;
+    // Each handler blocks the others: signals pending together run one after another,
+    // so the first sent is the one recorded.
     sigemptyset(&handler.sa_mask);
+    for (int s : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&handler.sa_mask, s);
     ::sigaction(SIGINT, &handler, &old_int_);
     ::sigaction(SIGTERM, &handler, &old_term_);
+    ::sigaction(SIGHUP, &handler, &old_hup_);
     struct sigaction ignore {};
     ignore.sa_handler = SIG_IGN;
     ::sigaction(SIGPIPE, &ignore, &old_pipe_);
   }
   ~SignalGuard() {
-    ::sigaction(SIGINT, &old_int_, nullptr);
-    ::sigaction(SIGTERM, &old_term_, nullptr);
+    struct sigaction ignore {};
+    ignore.sa_handler = SIG_IGN;
+    const bool stopping = caught_signal != 0;
+    ::sigaction(SIGINT, stopping ? &ignore : &old_int_, nullptr);
+    ::sigaction(SIGTERM, stopping ? &ignore : &old_term_, nullptr);
+    ::sigaction(SIGHUP, stopping ? &ignore : &old_hup_, nullptr);
     ::sigaction(SIGPIPE, &old_pipe_, nullptr);
     for (int& fd : signal_pipe)
       if (fd >= 0) ::close(fd), fd = -1;
@@ -66,7 +76,7 @@ class SignalGuard {
   SignalGuard& operator=(const SignalGuard&) = delete;
 
  private:
-  struct sigaction old_int_ {}, old_term_ {}, old_pipe_ {};
+  struct sigaction old_int_ {}, old_term_ {}, old_hup_ {}, old_pipe_ {};
 };
 
 std::string signal_text(int signal) {
@@ -89,7 +99,24 @@ struct Worker {
   Clock::time_point step_start;
   std::vector<CellResult> pending;   // the current group's results so far
   CompileCacheCounts counts;         // as it last reported them
+  int start_failures = 0;            // workers before this one, in its slot, that ended before their hello
 };
+
+// How many workers in a row may end before their hello before a slot gives up: the cells
+// it had left become errors and the run goes on.
+constexpr int kStartTries = 3;
+constexpr double kStartTimeoutFloor_s = 30;
+
+// What a worker was doing in each step, for the cell's message.
+std::string doing(const std::string& step) {
+  static const std::map<std::string, std::string> words = {
+      {"start", "starting"},          {"group", "setting up"},        {"reference", "preparing the reference of"},
+      {"compile", "compiling"},       {"draw", "drawing"},            {"judge", "judging"},
+      {"write", "writing the images of"}, {"twin", "running the twin of"}, {"divergence", "locating the divergence of"},
+      {"attribution", "attributing the failures of"}};
+  const auto it = words.find(step);
+  return it != words.end() ? it->second : "running " + step + " for";
+}
 
 void close_fd(int& fd) {
   if (fd >= 0) ::close(fd);
@@ -111,7 +138,7 @@ bool write_all(int fd, const std::string& text) {
 
 // Starts `binary __cell-worker` with its limits, and sends it the options. The worker gets
 // its own process group (a terminal's Ctrl-C reaches the supervisor only) and dies with us.
-Result<Worker> spawn_worker(const RunOptions& o, const std::string& options_line) {
+Result<Worker> spawn_worker(const RunOptions& o, const std::string& options_line, int number) {
   int commands[2], events[2];
   if (::pipe2(commands, O_CLOEXEC) != 0) return fail(ErrorStage::isolation, std::string("pipe: ") + std::strerror(errno));
   if (::pipe2(events, O_CLOEXEC) != 0) {
@@ -120,8 +147,11 @@ Result<Worker> spawn_worker(const RunOptions& o, const std::string& options_line
   }
   // Everything the child needs is built before fork: only async-signal-safe calls after it.
   std::vector<std::string> env_text = environment_keeping_crash_signals();
-  std::erase_if(env_text, [](const std::string& e) { return e.starts_with("SHADERBED_WORKER_EVENTS_FD="); });
+  std::erase_if(env_text, [](const std::string& e) {
+    return e.starts_with("SHADERBED_WORKER_EVENTS_FD=") || e.starts_with("SHADERBED_WORKER_NUMBER=");
+  });
   env_text.emplace_back("SHADERBED_WORKER_EVENTS_FD=3");
+  env_text.emplace_back("SHADERBED_WORKER_NUMBER=" + std::to_string(number));   // for WorkerFaultHook
   std::vector<char*> envp;
   for (std::string& e : env_text) envp.push_back(e.data());
   envp.push_back(nullptr);
@@ -154,7 +184,8 @@ Result<Worker> spawn_worker(const RunOptions& o, const std::string& options_line
   ::close(commands[0]);
   ::close(events[1]);
   ::fcntl(events[0], F_SETFL, O_NONBLOCK);
-  Worker w{.pid = pid, .commands = commands[1], .events = events[0]};
+  // Start-up (drivers, the plan, stored images) is a step with a deadline like any other.
+  Worker w{.pid = pid, .commands = commands[1], .events = events[0], .step = "start", .step_start = Clock::now()};
   if (!write_all(w.commands, options_line + "\n")) {
     ::kill(pid, SIGKILL);
     ::waitpid(pid, nullptr, 0);
@@ -172,9 +203,13 @@ std::string end_worker(Worker& w, bool kill_it) {
   }
   close_fd(w.commands), close_fd(w.events);
   w.pid = -1;
-  if (WIFSIGNALED(status)) return signal_text(WTERMSIG(status));
+  if (WIFSIGNALED(status))
+    return signal_text(WTERMSIG(status)) +
+           (WTERMSIG(status) == SIGKILL && !kill_it ? ", sent by another process or the system's out-of-memory killer" : "");
   return fmt::format("exit {}", WEXITSTATUS(status));
 }
+
+bool out_of_memory(const std::string& how) { return how == fmt::format("exit {}", kWorkerOutOfMemoryExit); }
 
 // ---- the supervisor -------------------------------------------------------------------
 
@@ -190,7 +225,7 @@ class Supervisor {
     const int hardware = int(std::max(1u, std::thread::hardware_concurrency()));
     const size_t count = std::min(bundles_.size(), size_t(o_.workers.jobs > 0 ? o_.workers.jobs : hardware));
     for (size_t i = 0; i < count; ++i) {
-      auto w = spawn_worker(o_, options_line_);
+      auto w = spawn_worker(o_, options_line_, out_.workers + 1);
       if (!w) return std::unexpected(w.error());
       workers_.push_back(std::move(*w));
       ++out_.workers;
@@ -207,7 +242,7 @@ class Supervisor {
         if (fds[i].revents == 0) continue;
         if (auto ok = read_events(workers_[i]); !ok) return std::unexpected(ok.error());
       }
-      check_timeouts();
+      if (auto ok = check_timeouts(); !ok) return std::unexpected(ok.error());
     }
     for (Worker& w : workers_)
       if (w.pid > 0) {
@@ -240,22 +275,42 @@ class Supervisor {
     return int(wait);
   }
 
+  // Every step has a deadline: a worker that stops anywhere (SIGSTOP, a livelock in a
+  // driver, a CPU reference that never ends) costs its cell, never the run.
   double step_limit_s(const std::string& step) const {
+    if (step.empty()) return 0;   // idle: no group sent
     if (step == "compile") return o_.workers.compile_timeout_s;
     if (step == "draw") return o_.workers.draw_timeout_s;
-    return 0;
+    // Loading the drivers takes seconds on a busy machine: a --step-timeout short enough
+    // for judging a small image must not kill every start-up.
+    if (step == "start") return std::max(step_timeout_s(), kStartTimeoutFloor_s);
+    return step_timeout_s();
   }
 
-  void check_timeouts() {
+  double step_timeout_s() const {
+    return o_.workers.step_timeout_s > 0 ? o_.workers.step_timeout_s : step_timeout_for_size(o_.cell.size);
+  }
+
+  Result<void> check_timeouts() {
     const auto now = Clock::now();
     for (Worker& w : workers_) {
       const double limit = step_limit_s(w.step);
       if (limit <= 0 || w.pid < 0) continue;
       if (std::chrono::duration<double>(now - w.step_start).count() <= limit) continue;
       end_worker(w, true);
-      lost(w, fmt::format("timeout: {} took longer than {:g} s (--{}-timeout)",
-                          w.step == "compile" ? "compiling its shaders" : "the draw", limit, w.step));
+      if (w.step == "compile" || w.step == "draw") {
+        lost(w, fmt::format("timeout: {} took longer than {:g} s (--{}-timeout)",
+                            w.step == "compile" ? "compiling its shaders" : "the draw", limit, w.step));
+        continue;
+      }
+      const std::string how = fmt::format("timeout in {}: the step took longer than {:g} s (--step-timeout)", w.step, limit);
+      if (!w.greeted) {
+        if (auto ok = failed_start(w, how); !ok) return ok;
+      } else {
+        lost(w, how);
+      }
     }
+    return {};
   }
 
   Result<void> read_events(Worker& w) {
@@ -275,8 +330,12 @@ class Supervisor {
       if (n < 0 && (errno == EAGAIN || errno == EINTR)) return {};
       // End of the pipe: the worker is gone.
       const std::string how = end_worker(w, false);
-      if (!w.greeted) return fail(ErrorStage::isolation, "the cell worker (" + o_.workers.worker_binary + ") ended before it started: " + how);
-      lost(w, w.step == "compile" ? "compiler crashed: " + how : "crashed: " + how);
+      if (!w.greeted) return failed_start(w, how);
+      if (out_of_memory(how))
+        lost(w, fmt::format("out of memory: the worker's allocations passed its {} MiB limit (--worker-memory)",
+                            o_.workers.worker_memory_mb));
+      else
+        lost(w, w.step == "compile" ? "compiler crashed: " + how : "crashed: " + how);
       return {};
     }
   }
@@ -287,6 +346,9 @@ class Supervisor {
     switch (event->kind) {
       case WorkerEvent::Kind::hello:
         w.greeted = true;
+        w.start_failures = 0;
+        ever_greeted_ = true;
+        w.step.clear();
         if (out_.tools.glslang.empty()) out_.tools = event->report.tools;
         next_group(w);
         break;
@@ -356,8 +418,10 @@ class Supervisor {
       }
       if (!write_all(w.commands, command + "\n")) return;   // it died: its events pipe says so
       w.busy = true;
-      w.step.clear();
-      w.step_cell.clear();
+      // Until the worker names its first step (the group's LUT and mesh, stored images).
+      w.step = "group";
+      w.step_cell = group.c->name + "/" + group.variant->name + "/" + group.shape;
+      w.step_start = Clock::now();
       return;
     }
   }
@@ -402,35 +466,25 @@ class Supervisor {
           if (program_key(group, cell) == program_key(group, *named) && !is_settled(g, cell_id(group, cell)))
             settle(g, group, cell, message);
       } else if (fresh) {
-        settle(g, group, *named, fmt::format("{} while {} this cell [stage {}]", how,
-                                             w.step == "draw" ? "drawing" : w.step.empty() ? "starting" : "judging",
+        settle(g, group, *named, fmt::format("{} while {} this cell [stage {}]", how, doing(w.step),
                                              w.step.empty() ? "worker" : w.step));
       } else {
         // Not one of the group's own cells (the original drawn as its reference, a
-        // counterfactual), or one already settled: the group cannot be drawn.
+        // counterfactual, the group as a whole), or one already settled: the group cannot
+        // be run.
         for (const PlannedCell& cell : group.cells)
           if (!is_settled(g, cell_id(group, cell)))
             settle(g, group, cell, fmt::format("{} while {} {} [stage {}]: this cell's group could not be run", how,
-                                               w.step == "compile" ? "compiling" : "drawing",
-                                               w.step_cell.empty() ? "its reference" : w.step_cell,
+                                               doing(w.step), w.step_cell.empty() ? "its reference" : w.step_cell,
                                                w.step.empty() ? "worker" : w.step));
       }
     }
     // A new worker picks the bundle up where it stopped.
     const std::optional<size_t> bundle = w.bundle;
     const size_t position = w.position;
-    auto replacement = spawn_worker(o_, options_line_);
+    auto replacement = spawn_worker(o_, options_line_, out_.workers + 1);
     if (!replacement) {
-      // Without a worker the rest of this bundle cannot run: its cells become errors.
-      if (bundle)
-        for (size_t p = position; p < bundles_[*bundle].size(); ++p) {
-          const size_t g = bundles_[*bundle][p];
-          for (const PlannedCell& cell : plan_.groups[g].cells)
-            if (!is_settled(g, cell_id(plan_.groups[g], cell))) settle(g, plan_.groups[g], cell, replacement.error().to_string());
-          w.bundle = bundle, w.position = p, w.busy = true;
-          finish_group(w);
-        }
-      w = Worker{};
+      give_up(w, bundle, position, "worker could not be started: " + replacement.error().to_string());
       return;
     }
     ++out_.workers;
@@ -439,13 +493,62 @@ class Supervisor {
     w.position = position;
   }
 
+  // A worker ended before its hello: another is started in its place, a few times; then
+  // the slot gives up and the cells it had left (every queued one, when no slot is left)
+  // become errors. Only when no worker of the run ever started is the run an Error.
+  Result<void> failed_start(Worker& w, std::string how) {
+    retired_counts_ = retired_counts_ + w.counts;
+    const std::optional<size_t> bundle = w.bundle;
+    const size_t position = w.position;
+    const int failures = w.start_failures + 1;
+    if (failures < kStartTries) {
+      auto replacement = spawn_worker(o_, options_line_, out_.workers + 1);
+      if (replacement) {
+        ++out_.workers;
+        w = std::move(*replacement);
+        w.bundle = bundle;
+        w.position = position;
+        w.start_failures = failures;
+        return {};
+      }
+      how = replacement.error().to_string();
+    }
+    const std::string message = fmt::format("worker could not be started: {} ({} tr{})", how, failures,
+                                            failures == 1 ? "y" : "ies");
+    const bool last_slot = std::ranges::none_of(workers_, [&](const Worker& other) { return &other != &w && other.pid > 0; });
+    if (last_slot && !ever_greeted_)
+      return fail(ErrorStage::isolation, "the cell worker (" + o_.workers.worker_binary + ") ended before it started: " + how);
+    give_up(w, bundle, position, message);
+    if (last_slot)
+      while (!queue_.empty()) {
+        const size_t next = queue_.front();
+        queue_.pop_front();
+        give_up(w, next, 0, message);
+      }
+    return {};
+  }
+
+  // Without a worker the rest of `bundle` from `position` cannot run: its cells become
+  // errors saying why, and the slot is left empty.
+  void give_up(Worker& w, std::optional<size_t> bundle, size_t position, const std::string& message) {
+    if (bundle)
+      for (size_t p = position; p < bundles_[*bundle].size(); ++p) {
+        const size_t g = bundles_[*bundle][p];
+        for (const PlannedCell& cell : plan_.groups[g].cells)
+          if (!is_settled(g, cell_id(plan_.groups[g], cell))) settle(g, plan_.groups[g], cell, message);
+        w.bundle = bundle, w.position = p, w.busy = true;
+        finish_group(w);
+      }
+    w = Worker{};
+  }
+
   Result<IsolatedResults> interrupted() {
     for (Worker& w : workers_)
       if (w.pid > 0) end_worker(w, true);
     const int signal = caught_signal;
+    const char* name = sigabbrev_np(signal);
     out_.interruption = Interruption{
-        signal, fmt::format("interrupted by {} after {} of {} cells", signal == SIGTERM ? "SIGTERM" : "SIGINT",
-                            out_.results.size(), plan_.cells)};
+        signal, fmt::format("interrupted by SIG{} after {} of {} cells", name ? name : "INT", out_.results.size(), plan_.cells)};
     for (const Worker& w : workers_) out_.compiles = out_.compiles + w.counts;
     out_.compiles = out_.compiles + retired_counts_;
     return std::move(out_);
@@ -460,6 +563,7 @@ class Supervisor {
   std::map<size_t, std::vector<CellResult>> settled_;  // by group: cells the supervisor decided
   std::map<std::string, std::string> crashed_programs_;   // case/variant/language -> the message
   CompileCacheCounts retired_counts_;                  // of workers that are gone
+  bool ever_greeted_ = false;                          // some worker of the run started
   IsolatedResults out_;
 };
 

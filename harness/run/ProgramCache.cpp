@@ -20,11 +20,25 @@ Result<ProgramSource> relaxed(ProgramSource source) {
   return source;
 }
 
+// What an entry holds, near enough to budget by: its SPIR-V, its GLSL texts, and a fixed
+// allowance for reflection and the strings around them.
+size_t program_bytes(const CachedProgram& entry) {
+  size_t bytes = 4096;
+  if (!entry.program) return bytes + entry.program.error().to_string().size();
+  const CompiledProgram& p = *entry.program;
+  for (const ShaderModule* m : {&p.vertex, &p.fragment, &p.vertex_gl, &p.fragment_gl})
+    bytes += m->spirv.size() * sizeof(uint32_t) + m->source_file.size();
+  for (const std::string* text : {&p.vertex_cross_glsl, &p.fragment_cross_glsl, &p.vertex_native_glsl,
+                                  &p.fragment_native_glsl})
+    bytes += text->size();
+  return bytes;
+}
+
 }  // namespace
 
 const CachedProgram& ProgramCache::get(const Case& c, const Variant& variant, Language language) {
   const std::string key = c.name + "/" + variant.name + "/" + to_string(language);
-  if (auto it = programs_.find(key); it != programs_.end()) return it->second;
+  if (const CachedProgram* cached = programs_.find(key)) return *cached;
   CachedProgram entry;
   const auto t0 = std::chrono::steady_clock::now();
   const ShaderFiles& files = variant.shaders.at(language);
@@ -42,7 +56,8 @@ const CachedProgram& ProgramCache::get(const Case& c, const Variant& variant, La
   if (entry.program && !options_.out_dir.empty())
     (void)write_program_artefacts((std::filesystem::path(options_.out_dir) / c.name / variant.name).string(),
                                   *entry.program, entry.sources);
-  return programs_.emplace(key, std::move(entry)).first->second;
+  const size_t bytes = program_bytes(entry);
+  return programs_.put(key, std::move(entry), bytes);
 }
 
 }  // namespace shaderbed

@@ -62,12 +62,24 @@ struct WorkerSupervision {
   std::string worker_binary;
   double compile_timeout_s = 30;   // compiling one program's stages (front ends, SPIR-V tools, SPIRV-Cross)
   double draw_timeout_s = 10;      // one cell's draw: pipeline build, warm-up and timed repeats
+  // Any other step (start-up, the reference, judging, writing, twin, divergence); 0 = by
+  // the image size (step_timeout_for_size), generous enough for a legitimate 4096 px run.
+  double step_timeout_s = 0;
   size_t worker_memory_mb = 8192;  // a worker's address space (a run at 256 px peaks near 1.1 GB)
 };
 
-// Called before each step of a cell that runs untrusted input ("compile", "draw") and
-// after it ("judge"), from the worker thread; an isolated worker reports it to the
-// supervisor, which times the step.
+// The default deadline of a step other than compiling and drawing: a minute up to 512 px,
+// growing with the pixels (a CPU reference, a twin and the judging scale with them): 16
+// minutes at 2048 px, where a model reference takes about 4 s and a float twin about 20 s,
+// so a legitimate run on a busy machine is not killed and a stopped worker is noticed.
+inline double step_timeout_for_size(int size) {
+  const double pixels = double(size) * double(size) / (512.0 * 512.0);
+  return 60.0 * (pixels > 1 ? pixels : 1);
+}
+
+// Called before each step a worker takes ("reference", "compile", "draw", "judge",
+// "write", "twin", "divergence", "attribution"), from the worker thread; an isolated
+// worker reports it to the supervisor, which gives every step a deadline.
 using StepObserver = std::function<void(const std::string& cell_id, const char* step)>;
 
 struct RunOptions {

@@ -5,7 +5,8 @@
 // of the plan both sides make from the same options. The worker answers on its events pipe,
 // one line each:
 //   hello <RunReport JSON: the toolchain of the backends it started>
-//   step <cell id> <compile|draw|judge>       before each untrusted step, and after it
+//   step <cell id> <step>       before each step (reference, compile, draw, judge, write,
+//                               twin, divergence, attribution); the supervisor gives each a deadline
 //   cell <RunReport JSON holding one result>
 //   done <disk hits> <compiles> <memory hits>   the group is finished (compile cache counts so far)
 #include <string>
@@ -17,10 +18,14 @@
 
 namespace shaderbed {
 
+// A worker's exit status when an allocation failed (its address space is limited): the
+// supervisor reports "out of memory" rather than a crash of the step it was in.
+inline constexpr int kWorkerOutOfMemoryExit = 86;
+
 struct WorkerEvent {
   enum class Kind { hello, step, cell, done, unknown } kind = Kind::unknown;
   std::string cell_id;   // step
-  std::string step;      // step: "compile", "draw", "judge"
+  std::string step;      // step: "reference", "compile", "draw", "judge", ...
   RunReport report;      // hello (tools), cell (one result)
   CompileCacheCounts compiles;   // done
 };

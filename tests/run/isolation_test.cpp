@@ -13,6 +13,7 @@
 #include "FileContents.h"
 #include "ShellCommand.h"
 #include "TempDir.h"
+#include "core/AddressSanitizer.h"
 
 namespace {
 
@@ -193,6 +194,117 @@ TEST(Isolation, AnInterruptedRunWritesWhatItHasMarkedIncomplete) {
   EXPECT_EQ(j["incomplete"]["signal"], 2);
   EXPECT_GT(j["results"].size(), 0u) << "the original's cells finished before the endless draw";
   for (const json& r : j["results"]) EXPECT_EQ(r["variant"], "original");
+}
+
+// A worker that replaces a crashed one and is killed before its hello (every later one
+// too, through the test hook): the slot gives up after a few tries, the cells it had left
+// are errors saying so, and the run still writes its report.
+TEST(Isolation, AReplacementWorkerKilledBeforeItsHelloCostsItsCellsNotTheRun) {
+  shaderbed::test::TempDir dir("isolation");
+  const std::string the_case = write_case(dir, "cg", R"(// Lambert's vertex stage (book §5.5) in Cg.
+float4 main(float4 p : POSITION, uniform float4x4 Transform) : POSITION { return mul(Transform, p); }
+)",
+                                          R"(// A Cg fragment program with an unnamed entry parameter (crashes glslang 12).
+float4 main(float3 : TEXCOORD0) : COLOR { return float4(1, 1, 1, 1); }
+)",
+                                          "Transform = \"transform\"\n");
+  const std::string results = dir / "r.json";
+  const auto [status, out] = shaderbed::test::run_shell(
+      "SHADERBED_TEST_WORKER_FAULT=KILL@start:2+ timeout -s KILL 120 " + std::string(SHADERBED_BINARY) +
+      " run --case " + the_case + " --shape sphere,cube --backend vulkan --size 16 --repeat 0 -j1 -q --json " + results);
+  EXPECT_EQ(status, 1) << out;
+  const json j = read_json(results);
+  EXPECT_FALSE(j.contains("incomplete")) << j.dump(2);
+  int crashed = 0, not_started = 0;
+  for (const json& r : j["results"]) {
+    const std::string message = r["message"];
+    if (message.find("compiler crashed") != std::string::npos) ++crashed;
+    if (message.find("worker could not be started: signal 9 (SIGKILL") != std::string::npos) {
+      EXPECT_NE(message.find("(3 tries)"), std::string::npos) << message;
+      ++not_started;
+    }
+    if (r["status"] != "pass") {
+      EXPECT_EQ(r["status"], "error") << r["id"] << ": " << message;
+    }
+  }
+  EXPECT_EQ(crashed, 1) << "the port's first group, on its first worker\n" << j.dump(2);
+  EXPECT_GE(not_started, 1) << "the port's other shape, left to the replacements\n" << j.dump(2);
+  EXPECT_EQ(j["results"].size(), 4u);
+}
+
+// SIGHUP (a closed terminal) ends the run like SIGINT, and the Ctrl-C presses that follow
+// it while the report is written do not end the process before it is.
+TEST(Isolation, AHangUpAndRepeatedInterruptsStillWriteThePartialReport) {
+  shaderbed::test::TempDir dir("isolation");
+  const std::string the_case = write_case(dir, "glsl", kGlslVertex, kSlowFragment,
+                                          "Transform = \"transform\"\nn = 1000000000\n");
+  const std::string results = dir / "r.json";
+  const std::string progress = dir / "progress.txt";
+  const auto [status, out] = shaderbed::test::run_shell(
+      "( " + std::string(SHADERBED_BINARY) + " run --case " + the_case + " --shape sphere --size 32 --repeat 0 -j2 "
+      "--draw-timeout 600 --json " + results + " --junit " + (dir / "r.xml") + " > " + progress +
+      " 2>&1 & pid=$!; for i in $(seq 1200); do grep -q '^progress: ' " + progress +
+      " && break; sleep 0.1; done; kill -HUP $pid; while kill -INT $pid 2>/dev/null; do sleep 0.002; done; wait $pid; "
+      "echo \"exit status $?\"; cat " + progress + " )");
+  EXPECT_NE(out.find("exit status 129"), std::string::npos) << out;
+  EXPECT_NE(out.find("INCOMPLETE: interrupted by SIGHUP after"), std::string::npos) << out;
+  const json j = read_json(results);
+  ASSERT_TRUE(j.contains("incomplete")) << j.dump(2);
+  EXPECT_EQ(j["incomplete"]["signal"], 1);
+  EXPECT_GT(j["results"].size(), 0u);
+  EXPECT_TRUE(fs::exists(dir / "r.xml"));
+}
+
+// Every step has a deadline (--step-timeout): a worker stopped (SIGSTOP, through the test
+// hook) while judging a cell or preparing a group's reference is killed, the cell (or the
+// group) is an error naming the step, and a fresh worker finishes the run.
+TEST(Isolation, AWorkerStoppedInAnyStepIsATimeoutNamingTheStep) {
+  for (const auto& [step, expected] :
+       {std::pair<std::string, std::string>{"judge", "timeout in judge: the step took longer than 1.5 s (--step-timeout) "
+                                                      "while judging this cell [stage judge]"},
+        std::pair<std::string, std::string>{"reference", "timeout in reference: the step took longer than 1.5 s "
+                                                          "(--step-timeout) while preparing the reference of "
+                                                          "lambert/pixel/sphere [stage reference]"}}) {
+    shaderbed::test::TempDir dir("isolation");
+    const std::string results = dir / "r.json";
+    const auto [status, out] = shaderbed::test::run_shell(
+        "SHADERBED_TEST_WORKER_FAULT=STOP@" + step + ":1 timeout -s KILL 120 " + std::string(SHADERBED_BINARY) +
+        " run --case lambert --variant pixel --lang glsl --backend vulkan --shape sphere,cube --size 16 "
+        "--repeat 0 -j1 -q --step-timeout 1.5 --json " + results);
+    EXPECT_EQ(status, 1) << step << ": " << out;
+    const json j = read_json(results);
+    ASSERT_EQ(j["results"].size(), 2u) << j.dump(2);
+    for (const json& r : j["results"]) {
+      if (r["shape"] == "sphere") {
+        EXPECT_EQ(r["status"], "error") << r["id"];
+        EXPECT_NE(r["message"].get<std::string>().find(expected), std::string::npos) << r["message"];
+      } else {
+        EXPECT_EQ(r["status"], "pass") << r["id"] << ": " << r["message"];
+      }
+    }
+  }
+}
+
+// A worker's allocation past its address-space limit (--worker-memory) is "out of
+// memory", not a crash of the step it was in: a 4096 px reference needs about 2 GiB and
+// fails at once under 1.5 GiB, where a worker starts in about 1.1 GiB (with llvmpipe's
+// threads pinned, whose stacks count against the limit).
+TEST(Isolation, AnAllocationPastTheWorkersLimitIsOutOfMemory) {
+  if (shaderbed::address_sanitizer_build) GTEST_SKIP() << "workers have no address-space limit under AddressSanitizer";
+  shaderbed::test::TempDir dir("isolation");
+  const std::string results = dir / "r.json";
+  const auto [status, out] = shaderbed::test::run_shell(
+      "LP_NUM_THREADS=2 " + std::string(SHADERBED_BINARY) +
+      " run --case lambert --variant pixel --lang glsl --backend vulkan --shape sphere --size 4096 --repeat 0 -j1 "
+      "-q --worker-memory 1536 --json " + results);
+  EXPECT_EQ(status, 1) << out;
+  const json j = read_json(results);
+  ASSERT_EQ(j["results"].size(), 1u) << j.dump(2);
+  EXPECT_EQ(j["results"][0]["status"], "error");
+  const std::string message = j["results"][0]["message"];
+  EXPECT_NE(message.find("out of memory: the worker's allocations passed its 1536 MiB limit (--worker-memory)"),
+            std::string::npos) << message;
+  EXPECT_EQ(message.find("crashed"), std::string::npos) << message;
 }
 
 }  // namespace

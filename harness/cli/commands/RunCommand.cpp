@@ -92,6 +92,17 @@ Command add_run_command(CLI::App& app) {
                   "errors)")
       ->capture_default_str()
       ->check(CLI::Range(0.1, 86400.0));
+  cmd->add_option("--step-timeout", run.workers.step_timeout_s,
+                  "Seconds any other step of a worker may take (start-up, the reference, judging, writing images, "
+                  "twin, divergence) before it is killed: the cell is 'error: timeout in <step>'; 0 = by the image "
+                  "size (60 s up to 512 px, growing with the pixels: 16 min at 2048)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 86400.0));
+  cmd->add_option("--worker-memory", run.workers.worker_memory_mb,
+                  "MiB of address space each worker may use; an allocation past it ends the worker and its cell is "
+                  "'error: out of memory'")
+      ->capture_default_str()
+      ->check(CLI::Range(size_t(64), size_t(1) << 30));
   cmd->add_option("--jobs,-j", run.workers.jobs,
                   "Worker threads, each with its own Vulkan device and GL context; 0 = one per core. Timings are "
                   "steadiest with --jobs 1")
