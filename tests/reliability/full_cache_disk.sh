@@ -5,7 +5,7 @@
 # Needs root (mount -t tmpfs). Usage: tests/reliability/full_cache_disk.sh BUILD_DIR
 set -euo pipefail
 build=${1:?usage: full_cache_disk.sh BUILD_DIR}
-shaderbed=$(realpath "$build/shaderbed")
+shaderbed=$(realpath "$build/bin/shaderbed")
 if [ "$(id -u)" -ne 0 ]; then
   echo "full_cache_disk: skipped (mounting a tmpfs needs root)"
   exit 0
