@@ -24,7 +24,7 @@ void copy_with_bom(const fs::path& from, const fs::path& to) {
   std::ofstream(to, std::ios::binary) << "\xEF\xBB\xBF" << text;
 }
 
-TEST(ShaderBom, HlslAndGlslSavedWithAByteOrderMarkRunToAPass) {
+TEST(ShaderBomRun, HlslAndGlslSavedWithAByteOrderMarkRunToAPass) {
   test::TempDir root("shader_bom");
   fs::create_directories(root.path() / "cases");
   fs::copy_file(test::kShaders / "cases" / "lambert.toml", root.path() / "cases" / "lambert.toml");
