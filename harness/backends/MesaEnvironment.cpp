@@ -77,6 +77,10 @@ void isolate_mesa_shader_cache() {
     disable();
     return;
   }
+  if (!cache_root_writable()) {   // full or unwritable: Mesa would die of SIGBUS on its mapped index
+    disable();
+    return;
+  }
   use_dir(settings.driver_dir());
 }
 

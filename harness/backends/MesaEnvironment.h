@@ -18,7 +18,8 @@ namespace shaderbed {
 // Precedence: --no-driver-cache (settings.driver == false) sets
 // MESA_SHADER_CACHE_DISABLE=true; otherwise a MESA_SHADER_CACHE_DIR or
 // MESA_SHADER_CACHE_DISABLE the user set is left alone; otherwise the cache goes to
-// <root>/mesa (and is disabled when there is no root). Values a shaderbed parent process
+// <root>/mesa (and is disabled when there is no root, or when the root's folder is full
+// or unwritable: cache_root_writable() in core/CacheSettings.h). Values a shaderbed parent process
 // set (inherited by a child shaderbed) are not the user's: the child applies its own.
 void isolate_mesa_shader_cache();
 

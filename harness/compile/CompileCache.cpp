@@ -5,14 +5,16 @@
 
 #include "compile/CrossGlsl.h"
 #include "compile/ModuleCodec.h"
+#include "compile/ShaderFileText.h"
 #include "compile/ToolVersions.h"
+#include "core/Sha256.h"
 
 namespace shaderbed {
 namespace {
 
 // The entry layout; bump the version when it (or the module codec) changes.
 constexpr std::string_view kMagic = "shaderbed compile cache\n";
-constexpr uint32_t kFormat = 1;
+constexpr uint32_t kFormat = 2;   // 2: named and checked by SHA-256, not FNV-1a
 constexpr const char* kStageKind = "stage";
 constexpr const char* kCrossKind = "cross";
 
@@ -67,8 +69,8 @@ CompileCacheCounts compile_cache_counts() {
 void count_compile_memory_hit() { ++process_counts().memory_hits; }
 void count_compile_run() { ++process_counts().compiles; }
 
-CompileCache::CompileCache(std::filesystem::path dir, CompileToolchain toolchain)
-    : disk_(std::move(dir)), toolchain_(std::move(toolchain)) {}
+CompileCache::CompileCache(std::filesystem::path dir, CompileToolchain toolchain, bool writes)
+    : disk_(std::move(dir)), toolchain_(std::move(toolchain)), writes_(writes) {}
 
 CompileCacheCounts CompileCache::counts() const { return {0, hits_.load(), misses_.load(), compiles_.load()}; }
 
@@ -104,16 +106,18 @@ std::string CompileCache::cross_key(const std::vector<uint32_t>& spirv, Stage st
 }
 
 std::string CompileCache::entry_name(const std::string& key, const char* kind) {
-  return hex64(fnv1a64(key)) + "." + kind;
+  return sha256_hex(key) + "." + kind;
 }
 
 std::optional<std::string> CompileCache::find(const std::string& key, const char* kind) {
   const std::optional<std::string> bytes = disk_.load(entry_name(key, kind));
-  if (!bytes || bytes->size() < kMagic.size() + sizeof(uint64_t)) return std::nullopt;
-  const std::string_view body(bytes->data(), bytes->size() - sizeof(uint64_t));
-  uint64_t checksum = 0;
-  std::memcpy(&checksum, bytes->data() + body.size(), sizeof checksum);
-  if (checksum != fnv1a64(body) || !body.starts_with(kMagic)) return std::nullopt;
+  if (!bytes || bytes->size() < kMagic.size() + sizeof(Sha256Digest)) return std::nullopt;
+  // The stored SHA-256 must be the body's: an entry edited without it is recompiled. (One
+  // who can write the folder can write a matching hash too; the cache is the user's own.)
+  const std::string_view body(bytes->data(), bytes->size() - sizeof(Sha256Digest));
+  const Sha256Digest checksum = sha256(body);
+  if (std::memcmp(checksum.data(), bytes->data() + body.size(), checksum.size()) != 0 || !body.starts_with(kMagic))
+    return std::nullopt;
 
   ByteReader in(body.substr(kMagic.size()));
   uint32_t format = 0;
@@ -124,7 +128,8 @@ std::optional<std::string> CompileCache::find(const std::string& key, const char
   for (uint64_t i = 0; i < files; ++i) {
     SourceFile f;
     if (!in.str(f.path) || !in.str(f.text)) return std::nullopt;
-    const std::optional<std::string> now = read_file_bytes(f.path);
+    // Read as the compile read it (ShaderFileText.h), so a file with a BOM can be a hit.
+    const Result<std::string> now = read_shader_text(f.path, "#include");
     if (!now || *now != f.text) return std::nullopt;   // an #included file changed (or went)
   }
   std::string payload;
@@ -134,6 +139,7 @@ std::optional<std::string> CompileCache::find(const std::string& key, const char
 
 void CompileCache::store(const std::string& key, const char* kind, const std::vector<SourceFile>& read_files,
                          const std::string& payload) {
+  if (!writes_) return;
   ByteWriter out;
   out.u32(kFormat);
   out.str(key);
@@ -145,8 +151,8 @@ void CompileCache::store(const std::string& key, const char* kind, const std::ve
   out.str(payload);
   std::string entry(kMagic);
   entry += out.bytes();
-  const uint64_t checksum = fnv1a64(entry);
-  entry.append(reinterpret_cast<const char*>(&checksum), sizeof checksum);
+  const Sha256Digest checksum = sha256(entry);
+  entry.append(reinterpret_cast<const char*>(checksum.data()), checksum.size());
   disk_.store(entry_name(key, kind), entry);
 }
 

@@ -6,15 +6,16 @@
 // A stage entry is keyed by everything that affects its bytes: language, stage, target,
 // entry point, source path and exact text, the versions of glslang, SPIRV-Tools and
 // SPIRV-Cross, and a fingerprint of shaderbed's own compile stage (its sources and the
-// compiler libraries it links, hashed at build time). The hash of that key is only the
+// compiler libraries it links, hashed at build time). The SHA-256 of that key is only the
 // file name: the entry stores the whole key and a hit compares it byte for byte, so a
 // collision cannot serve another shader's SPIR-V. Files the compile #included are stored
 // with their paths and exact contents, and a hit re-reads each one: any change is a miss
 // (ccache's manifest idea). A cross entry is keyed by the SPIR-V words, the stage and the
 // same versions and fingerprint.
 //
-// Only successful compiles are stored. An entry that is missing, truncated, corrupt
-// (checksum), of another format or of another key is a miss, never an error.
+// Only successful compiles are stored. An entry ends with the SHA-256 of the rest: one
+// that is missing, truncated, corrupt or edited (the hash does not match), of another
+// format or of another key is a miss, never an error.
 #include <atomic>
 #include <cstdint>
 #include <filesystem>
@@ -57,7 +58,9 @@ void count_compile_run();
 
 class CompileCache {
  public:
-  explicit CompileCache(std::filesystem::path dir, CompileToolchain toolchain = current_compile_toolchain());
+  // With `writes` false the cache is only read (a full or unwritable folder).
+  explicit CompileCache(std::filesystem::path dir, CompileToolchain toolchain = current_compile_toolchain(),
+                        bool writes = true);
   const std::filesystem::path& dir() const { return disk_.dir(); }
 
   // From the cache, else compile_stage(), storing a success.
@@ -85,6 +88,7 @@ class CompileCache {
 
   DiskCache disk_;
   CompileToolchain toolchain_;
+  bool writes_ = true;
   std::atomic<size_t> hits_{0}, misses_{0}, compiles_{0};
 };
 

@@ -4,10 +4,10 @@
 #include <map>
 #include <sstream>
 
-#include "core/BoundedFile.h"
 #include "compile/EffectFrontEnd.h"
 #include "compile/GlslDialect.h"
 #include "compile/GlslangFrontEnd.h"
+#include "compile/ShaderFileText.h"
 #include "compile/ShaderLabFrontEnd.h"
 #include "compile/SourceDefines.h"
 #include "compile/SpirvReflection.h"
@@ -28,7 +28,7 @@ const char* to_string(Language l) {
 const char* to_string(Stage s) { return s == Stage::vertex ? "vertex" : "fragment"; }
 
 Result<ShaderSource> load_shader_source(Stage stage, const std::string& path) {
-  auto text = read_bounded_file(path, "shader file", ErrorStage::compile);
+  auto text = read_shader_text(path, "shader file");
   if (!text) return std::unexpected(text.error());
   return ShaderSource{.stage = stage, .path = path, .text = std::move(*text)};
 }

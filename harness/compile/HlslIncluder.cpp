@@ -1,5 +1,5 @@
 #include "compile/HlslIncluder.h"
-#include "core/BoundedFile.h"
+#include "compile/ShaderFileText.h"
 
 #include <filesystem>
 #include <fstream>
@@ -17,7 +17,7 @@ glslang::TShader::Includer::IncludeResult* HlslIncluder::includeLocal(const char
     const std::string& empty = texts_.emplace_back();
     return new IncludeResult(name, empty.data(), 0, nullptr);
   }
-  auto text = read_bounded_file(name, "#include \"" + std::string(header) + "\"", ErrorStage::compile);
+  auto text = read_shader_text(name, "#include \"" + std::string(header) + "\"");
   if (!text)
     return failure("cannot read '" + name + "': " + text.error().message +
                    " (#include \"" + header + "\" is resolved relative to the including file" +

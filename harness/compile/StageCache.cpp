@@ -17,7 +17,8 @@ namespace {
 std::optional<CompileCache> disk_cache() {
   const CacheSettings settings = cache_settings();
   if (!settings.compile_enabled()) return std::nullopt;
-  return std::optional<CompileCache>(std::in_place, settings.compile_dir());
+  return std::optional<CompileCache>(std::in_place, settings.compile_dir(), current_compile_toolchain(),
+                                     cache_root_writable());
 }
 
 }  // namespace

@@ -17,4 +17,8 @@ constexpr size_t kMaxSourceBytes = size_t(16) << 20;   // 16 MiB: the largest li
 Result<std::string> read_bounded_file(const std::string& path, const std::string& what, ErrorStage stage,
                                       size_t limit = kMaxSourceBytes);
 
+// read_bounded_file's checks alone, for a file another library opens (an image through
+// OpenImageIO): it exists, is a regular file, and has at most `limit` bytes.
+Result<void> check_bounded_file(const std::string& path, const std::string& what, ErrorStage stage, size_t limit);
+
 }  // namespace shaderbed

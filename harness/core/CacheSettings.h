@@ -5,6 +5,7 @@
 //   <root>/mesa      Mesa's own disk shader cache (MESA_SHADER_CACHE_DIR), for the drivers
 //   <root>/compile   shaderbed's compile cache: SPIR-V + reflection, SPIRV-Cross GLSL
 // Neither can change a result: each is keyed by everything that produces its bytes.
+#include <cstdint>
 #include <string>
 
 namespace shaderbed {
@@ -28,5 +29,21 @@ CacheSettings cache_settings_from_environment();
 // cache_settings_from_environment() (read on first use). Thread-safe.
 CacheSettings cache_settings();
 void set_cache_settings(CacheSettings settings);
+
+// A cache folder on a full disk is worse than none: Mesa maps its index file, and a page
+// it cannot back ends the process with SIGBUS. Below this much free space the caches'
+// writes are off.
+constexpr uint64_t kCacheMinFreeBytes = uint64_t(16) << 20;
+
+// Why `dir` cannot take the caches' writes: it cannot be created, its filesystem has less
+// than `min_free_bytes` free, or a probe write of a few hundred KiB fails (permissions, a
+// read-only mount, quota). "" when it can. Creates the folder.
+std::string cache_folder_problem(const std::string& dir, uint64_t min_free_bytes = kCacheMinFreeBytes);
+
+// Whether the current settings' root can take writes (cache_folder_problem, decided once
+// per root and process). When it cannot, Mesa's cache is disabled and the compile cache
+// only read, and one note says so on stderr, once for a process and the shaderbed
+// processes it starts.
+bool cache_root_writable();
 
 }  // namespace shaderbed

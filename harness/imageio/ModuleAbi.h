@@ -4,6 +4,13 @@
 // symbol's version when a function changes.
 #include <cstddef>
 
+// The largest image a read decodes, checked on the file's header before any pixel is
+// decoded or memory is taken for it: a small PNG can declare 30000 x 30000. Each side,
+// and the bytes the image takes as float values, at least 4 a texel (the RGBA a texture
+// becomes): 4096 x 4096 RGBA (a read holds two or three copies of that at once).
+constexpr int kMaxImageSide = 16384;
+constexpr size_t kMaxImageFloatBytes = size_t(256) << 20;
+
 extern "C" {
 
 struct ShaderbedImageIo {

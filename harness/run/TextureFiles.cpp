@@ -7,11 +7,15 @@
 #include <mutex>
 
 #include "backends/TextureShape.h"
+#include "core/BoundedFile.h"
 #include "imageio/ImageIoModule.h"
 
 namespace shaderbed {
 namespace fs = std::filesystem;
 namespace {
+
+// No texture file is this large; the decoded size is bounded by the header (ModuleAbi.h).
+constexpr size_t kMaxTextureFileBytes = size_t(1) << 30;
 
 Error at_binding(const TextureBinding& b, const std::string& case_path, std::string message) {
   return Error{.message = std::move(message), .file = case_path, .line = b.line, .column = b.column, .stage = ErrorStage::texture};
@@ -81,6 +85,11 @@ Result<Face> read_face(const std::string& name, const TextureBinding& b, const s
   if (!fs::exists(file))
     return std::unexpected(at_binding(b, case_path, "texture '" + name + "': no image file '" + shown(file, case_path) +
                                                         "' (paths are relative to the case's shader root)"));
+  // A FIFO would block OpenImageIO's open and /dev/zero feed it forever: only a regular
+  // file of a size an image can have reaches it (its header then bounds the decode).
+  if (auto ok = check_bounded_file(file, "the image file", ErrorStage::texture, kMaxTextureFileBytes); !ok)
+    return std::unexpected(at_binding(b, case_path, "texture '" + name + "': cannot read '" + shown(file, case_path) +
+                                                        "': " + ok.error().message));
   const bool file_levels = b.mipmaps == MipSource::file;
   auto read = read_image_levels(file, file_levels);
   if (!read)
@@ -144,6 +153,10 @@ Result<Texture> load(const std::string& name, const TextureBinding& b, const std
 }
 
 }  // namespace
+
+Result<Texture> read_texture_file(const std::string& name, const TextureBinding& binding, const std::string& case_path) {
+  return load(name, binding, case_path);
+}
 
 double srgb_to_linear(double v) { return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4); }
 double linear_to_srgb(double v) { return v <= 0.0031308 ? v * 12.92 : 1.055 * std::pow(v, 1 / 2.4) - 0.055; }

@@ -17,9 +17,15 @@
 namespace shaderbed {
 
 // Errors (a missing file, an unreadable image, faces that disagree) point at the case
-// file's line that binds the texture and name the texture and the image file.
+// file's line that binds the texture and name the texture and the image file. Only a
+// regular file is opened (a FIFO or /dev/zero is refused), and its header must declare an
+// image within kMaxImageSide and kMaxImageFloatBytes (imageio/ModuleAbi.h) before any
+// pixel is decoded: a decompression bomb is an error of stage "texture", not a crash.
 Result<std::shared_ptr<const Texture>> load_texture_file(const std::string& name, const TextureBinding& binding,
                                                          const std::string& case_path);
+// The same, read again every time and kept nowhere (load_texture_file keeps what it loads
+// for the process): for the texture loader's fuzz target.
+Result<Texture> read_texture_file(const std::string& name, const TextureBinding& binding, const std::string& case_path);
 
 // sRGB transfer functions (IEC 61966-2-1), as the samplers' sRGB decode applies them.
 double srgb_to_linear(double encoded);

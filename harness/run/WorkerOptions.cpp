@@ -68,6 +68,8 @@ void from_json(const json& j, ProcessSettings& p) {
 }
 
 WorkerOptions worker_options(const RunOptions& o) {
+  // Decided here, before any worker starts, so a full cache folder's note is printed once.
+  cache_root_writable();
   return {o.select, cell_settings(o), {cache_settings(), chosen_vulkan_device()}};
 }
 

@@ -4,11 +4,10 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
-#include <vector>
-
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include "imageio/ModuleAbi.h"
 
@@ -29,6 +28,22 @@ OIIO::ImageSpec unassociated_alpha() {
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);
   return config;
+}
+
+// The header's extents against kMaxImageSide and kMaxImageFloatBytes; "" within them.
+std::string over_budget(const OIIO::ImageSpec& spec) {
+  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.depth > 1)
+    return "declares an image of " + std::to_string(spec.width) + "x" + std::to_string(spec.height) + "x" +
+           std::to_string(spec.depth) + " with " + std::to_string(spec.nchannels) + " channels";
+  const std::string extent = std::to_string(spec.width) + "x" + std::to_string(spec.height);
+  if (spec.width > kMaxImageSide || spec.height > kMaxImageSide)
+    return "declares " + extent + " pixels, over the " + std::to_string(kMaxImageSide) + " a side an image may have";
+  const size_t bytes = size_t(spec.width) * size_t(spec.height) * size_t(std::max(spec.nchannels, 4)) * sizeof(float);
+  if (bytes > kMaxImageFloatBytes)
+    return "declares " + extent + " pixels with " + std::to_string(spec.nchannels) + " channels, " +
+           std::to_string(bytes >> 20) + " MiB as float, over the " + std::to_string(kMaxImageFloatBytes >> 20) +
+           " MiB an image may take";
+  return "";
 }
 
 // Encoded in memory, for shaderbed to write with checked writes: OpenImageIO's own file
@@ -58,6 +73,7 @@ int read(const char* path, int* width, int* height, int* channels, float** pixel
   auto in = OIIO::ImageInput::open(path, &config);
   if (!in) return failed(OIIO::geterror(), error, error_size);
   const OIIO::ImageSpec& spec = in->spec();
+  if (const std::string over = over_budget(spec); !over.empty()) return failed(over, error, error_size);
   const size_t count = size_t(spec.width) * spec.height * spec.nchannels;
   auto* data = static_cast<float*>(std::malloc(count * sizeof(float)));
   if (!data) return failed("out of memory", error, error_size);
@@ -84,6 +100,7 @@ int read_level(const char* path, int level, int* width, int* height, int* channe
                   error_size);
   if (!in->seek_subimage(0, level)) return failed(in->geterror(), error, error_size);
   const OIIO::ImageSpec& spec = in->spec();
+  if (const std::string over = over_budget(spec); !over.empty()) return failed(over, error, error_size);
   const size_t values = size_t(spec.width) * spec.height * spec.nchannels;
   auto* data = static_cast<float*>(std::malloc(values * sizeof(float)));
   if (!data) return failed("out of memory", error, error_size);
