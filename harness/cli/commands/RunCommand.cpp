@@ -11,6 +11,7 @@
 #include "core/ThisExecutable.h"
 #include "core/WritablePath.h"
 #include "run/Runner.h"
+#include "run/StoredImages.h"
 #include "report/ConsoleProgress.h"
 #include "report/ConsoleReport.h"
 #include "report/JsonReport.h"
@@ -97,6 +98,15 @@ Command add_run_command(CLI::App& app) {
             if (!args->outputs.load_charts() || !args->outputs.check_writable()) return kExitBadInput;
             // An HTML report shows the images: without --out they go beside index.html.
             if (args->options.cell.out_dir.empty()) args->options.cell.out_dir = args->outputs.html;
+            // Checked before --out and --save-images are made: neither may be made inside the
+            // stored images that judge the run (a case's own are checked once it is read).
+            const CellSettings& cell = args->options.cell;
+            if (auto ok = check_stored_folders(cell.out_dir, cell.save_images_dir,
+                                               stored_reference_dirs(cell.against_dir, {}));
+                !ok) {
+              fmt::print(stderr, "shaderbed: {}\n", ok.error().to_string());
+              return kExitBadInput;
+            }
             for (const auto& [folder, option] : {std::pair{args->options.cell.out_dir, "--out"},
                                                   std::pair{args->options.cell.save_images_dir, "--save-images"}})
               if (!folder.empty())
@@ -119,7 +129,10 @@ Command add_run_command(CLI::App& app) {
             if (!args->outputs.write(*report)) return kExitFail;
             if (!options.cell.out_dir.empty())
               fmt::print("images: {}/<case>/<variant>/<shape>/\n", std::filesystem::absolute(options.cell.out_dir).string());
-            if (!options.cell.save_images_dir.empty())
+            if (!options.cell.save_images_dir.empty() && report->interruption)
+              fmt::print("stored images: none saved (the run was interrupted; {} is as it was)\n",
+                         options.cell.save_images_dir);
+            else if (!options.cell.save_images_dir.empty())
               fmt::print("stored images: {} (judge later runs with --against {})\n",
                          (std::filesystem::absolute(options.cell.save_images_dir) / "manifest.json").string(),
                          options.cell.save_images_dir);
