@@ -144,7 +144,8 @@ Result<void> check_stored_folders(const std::string& out_dir, const std::string&
   const fs::path save = save_images_dir.empty() ? fs::path() : canonical_folder(save_images_dir);
   for (const auto& [dir, who] : judged_by) {
     const fs::path judged = canonical_folder(dir);
-    const std::string what = fmt::format("the stored images {} judges this run by ({})", who, dir);
+    // "--against good", or "the reference images of case 'x' (DIR)": what judges the run.
+    const std::string what = who == "--against" ? who + " " + dir : fmt::format("the reference images of {} ({})", who, dir);
     if (!save.empty())
       if (const std::string relation = folder_relation(save, judged); !relation.empty())
         return refuse(fmt::format("--save-images {} {} {}: the run would replace the known-good images that judge it "
