@@ -260,6 +260,7 @@ struct RunReport {
   std::string out_dir;
   std::string keep_images;          // which cells' images out_dir has (CellSettings::keep_images); "" = unknown
   std::string shard;                // "I/N" when this is one shard of a run, else ""
+  std::string stored_images_lost;   // why --save-images saved nothing (a full disk...); "" = saved or not asked
 
   size_t count(CellStatus status) const {
     size_t n = 0;

@@ -29,6 +29,8 @@
 #include "run/GroupRunner.h"
 #include "run/IsolatedRun.h"
 #include "run/ParameterOverrides.h"
+#include "run/StagedStoredImages.h"
+#include "run/StoredImages.h"
 #include "run/Toolchain.h"
 #include "scene/CaseSelection.h"
 #include "scene/NameFilter.h"
@@ -271,6 +273,21 @@ Result<RunReport> run_suite(const RunOptions& o) {
   const std::vector<std::string> inputs = run_inputs(**plan, o);
   for (const auto& [path, option] : o.report_files)
     if (auto ok = check_not_an_input(path, option, inputs); !ok) return std::unexpected(ok.error());
+  // A run never writes into the stored images that judge it, and replaces a stored set
+  // only as a whole, after it has finished: until then its cells (in the workers too)
+  // save their images into the staging folder, as if it were the --save-images folder.
+  RunOptions staged_options = o;
+  std::optional<StagedStoredImages> staged;
+  if (auto ok = check_stored_folders(o.cell.out_dir, o.cell.save_images_dir,
+                                     stored_reference_dirs(o.cell.against_dir, (*plan)->cases));
+      !ok)
+    return std::unexpected(ok.error());
+  if (!o.cell.save_images_dir.empty()) {
+    auto begun = StagedStoredImages::begin(o.cell.save_images_dir, o.cell.size);
+    if (!begun) return std::unexpected(begun.error());
+    staged.emplace(std::move(*begun));
+    staged_options.cell.save_images_dir = staged->staging_dir();
+  }
 
   RunReport report;
   report.run_id = run_identity(o);
@@ -282,11 +299,11 @@ Result<RunReport> run_suite(const RunOptions& o) {
   scene.width = scene.height = o.cell.size;
   CompileCacheCounts compiles;
   if (o.workers.worker_binary.empty()) {
-    report.results = run_in_process(o, scene, **plan, report.tools, report.workers);
+    report.results = run_in_process(staged_options, scene, **plan, report.tools, report.workers);
     compiles = compile_cache_counts() - compiles_before;
   } else {
     isolate_mesa_shader_cache();   // as the workers' drivers will see it (and as the report says)
-    auto isolated = run_isolated(o, **plan);
+    auto isolated = run_isolated(staged_options, **plan);
     if (!isolated) return std::unexpected(isolated.error());
     report.results = std::move(isolated->results);
     report.tools = isolated->tools;
@@ -302,9 +319,21 @@ Result<RunReport> run_suite(const RunOptions& o) {
                           caches.compile_enabled() ? caches.compile_dir() : "", compiles.hits(), compiles.misses(),
                           compiles.memory_hits};
   report.wall_ms = ms_since(start);
-  if (!o.cell.save_images_dir.empty())
-    if (auto ok = write_stored_manifest(o.cell.save_images_dir, report, o.cell.size); !ok)
-      return std::unexpected(ok.error());
+  if (staged) {
+    if (report.interruption) {
+      // An interrupted run's images go with its staging folder: the set stays as it was.
+      for (CellResult& r : report.results) r.artefacts.stored_exr.clear();
+    } else if (auto ok = staged->commit(report); !ok) {
+      // The set stays as it was, and the run keeps its verdicts: each cell says its image
+      // was not saved, and the run why.
+      report.stored_images_lost = ok.error().to_string();
+      for (CellResult& r : report.results)
+        if (!r.artefacts.stored_exr.empty()) {
+          r.artefacts.stored_exr.clear();
+          r.warnings.push_back("stored image not saved: the set in " + o.cell.save_images_dir + " is as it was");
+        }
+    }
+  }
   return report;
 }
 

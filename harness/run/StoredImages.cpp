@@ -1,57 +1,56 @@
 #include "run/StoredImages.h"
 
+#include <sys/stat.h>
+
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 
-#include "core/AtomicFile.h"
 #include "imageio/ImageIoModule.h"
 
 namespace shaderbed {
 namespace fs = std::filesystem;
 namespace {
 
-using ordered_json = nlohmann::ordered_json;
-
 Error stored_error(const std::string& path, std::string message) {
   return Error{.message = std::move(message), .file = path, .stage = ErrorStage::stored_images};
 }
 
-ordered_json tools_json(const ToolVersions& t) {
-  return {{"glslang", t.glslang}, {"spirv_tools", t.spirv_tools}, {"spirv_cross", t.spirv_cross},
-          {"vulkan_driver", t.vulkan_driver}, {"gl_driver", t.gl_driver}, {"llvm", t.llvm},
-          {"vulkan_device", t.vulkan_device}};
+// A stored EXR is read only when it is a regular file no bigger than an uncompressed one
+// of the set's size could be: a FIFO would hang the reader, /dev/zero exhaust its memory.
+Result<void> check_stored_exr(const std::string& path, int size) {
+  struct stat info {};
+  if (::stat(path.c_str(), &info) != 0)
+    return std::unexpected(stored_error(path, std::string("cannot read the stored image: ") + std::strerror(errno)));
+  if (!S_ISREG(info.st_mode))
+    return std::unexpected(stored_error(path, "the stored image is not a regular file (a device, FIFO or folder is refused)"));
+  // 5 float channels a pixel, twice over for headers and offset tables, and 1 MiB.
+  const uintmax_t limit = uintmax_t(size) * uintmax_t(size) * 5 * 4 * 2 + (uintmax_t(1) << 20);
+  if (uintmax_t(info.st_size) > limit)
+    return std::unexpected(stored_error(path, fmt::format("the stored image is {0} bytes, more than a {1}x{1} one can be",
+                                                          uintmax_t(info.st_size), size)));
+  return {};
 }
 
-ToolVersions tools_of(const ordered_json& j) {
-  ToolVersions t;
-  const auto get = [&](const char* key, std::string& out) {
-    if (j.contains(key) && j[key].is_string()) out = j[key].get<std::string>();
-  };
-  get("glslang", t.glslang);
-  get("spirv_tools", t.spirv_tools);
-  get("spirv_cross", t.spirv_cross);
-  get("vulkan_driver", t.vulkan_driver);
-  get("gl_driver", t.gl_driver);
-  get("llvm", t.llvm);
-  get("vulkan_device", t.vulkan_device);
-  return t;
-}
-
-// The manifest as it is on disk, or an empty one when there is none yet.
-Result<ordered_json> read_manifest(const fs::path& file) {
+// The canonical form of a folder that may not exist yet, without a trailing separator.
+fs::path canonical_folder(const std::string& dir) {
   std::error_code ec;
-  if (!fs::exists(file, ec)) return ordered_json::object();
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  ordered_json j = ordered_json::parse(text.str(), nullptr, false);
-  if (j.is_discarded() || !j.is_object() || !j.contains("images") || !j["images"].is_object())
-    return std::unexpected(stored_error(file.string(), "not a shaderbed stored-images manifest"));
-  return j;
+  fs::path p = fs::weakly_canonical(fs::absolute(dir, ec), ec);
+  if (ec) p = fs::absolute(dir, ec).lexically_normal();
+  if (!p.has_filename() && p.has_parent_path() && p != p.root_path()) p = p.parent_path();
+  return p;
+}
+
+// How folder `a` stands to folder `b`: "is", "is inside", "holds", or "" when apart.
+std::string folder_relation(const fs::path& a, const fs::path& b) {
+  auto ai = a.begin(), bi = b.begin();
+  for (; ai != a.end() && bi != b.end(); ++ai, ++bi)
+    if (*ai != *bi) return "";
+  if (ai == a.end() && bi == b.end()) return "is";
+  return ai == a.end() ? "holds" : "is inside";
 }
 
 }  // namespace
@@ -71,52 +70,18 @@ Result<void> save_stored_image(const std::string& dir, const CellResult& r, cons
   return write_image_file(file.string(), image.width, image.height, 5, PixelType::float32, pixels.data());
 }
 
-Result<void> write_stored_manifest(const std::string& dir, const RunReport& report, int size) {
-  const fs::path file = fs::path(dir) / "manifest.json";
-  auto existing = read_manifest(file);
-  if (!existing) return std::unexpected(existing.error());
-  ordered_json manifest = std::move(*existing);
-  if (manifest.contains("size") && manifest["size"] != size)
-    return std::unexpected(stored_error(file.string(), fmt::format("the folder holds {0}x{0} images; this run drew "
-                                                                   "{1}x{1} (save into another folder)",
-                                                                   manifest["size"].get<int>(), size)));
-  manifest["schema"] = kStoredImagesSchema;
-  manifest["size"] = size;
-  manifest["tools"] = tools_json(report.tools);
-  if (!manifest.contains("images")) manifest["images"] = ordered_json::object();
-  for (const CellResult& r : report.results) {
-    if (r.artefacts.stored_exr.empty()) continue;
-    manifest["images"][r.id()] = {{"file", stored_image_file(r)},
-                                  {"scene", r.scene_hash},
-                                  {"spirv_hash", {{"vertex", r.vertex_spirv_hash}, {"fragment", r.fragment_spirv_hash}}}};
-  }
-  return write_file_atomically(file.string(), manifest.dump(2) + "\n", "the stored-images manifest");
-}
-
 Result<StoredRun> load_stored_run(const std::string& dir, int size) {
   const fs::path file = fs::path(dir) / "manifest.json";
   std::error_code ec;
-  if (!fs::exists(file, ec))
+  if (!fs::exists(fs::symlink_status(file, ec)))
     return std::unexpected(stored_error(dir, "no manifest.json: not a folder written by shaderbed run --save-images"));
-  auto manifest = read_manifest(file);
+  auto manifest = read_stored_manifest(file.string());
   if (!manifest) return std::unexpected(manifest.error());
-  const ordered_json& m = *manifest;
-  StoredRun run{.dir = dir, .size = m.value("size", 0), .tools = tools_of(m.value("tools", ordered_json::object()))};
-  if (run.size != size)
+  if (manifest->size != size)
     return std::unexpected(stored_error(file.string(), fmt::format("the stored images are {0}x{0}; this run draws "
                                                                    "{1}x{1} (run with --size {0})",
-                                                                   run.size, size)));
-  for (const auto& [id, entry] : m["images"].items()) {
-    if (!entry.is_object() || !entry.contains("file") || !entry["file"].is_string())
-      return std::unexpected(stored_error(file.string(), "entry '" + id + "' has no file"));
-    StoredImage image{.file = entry["file"].get<std::string>(), .scene = entry.value("scene", std::string())};
-    if (entry.contains("spirv_hash") && entry["spirv_hash"].is_object()) {
-      image.vertex_spirv_hash = entry["spirv_hash"].value("vertex", std::string());
-      image.fragment_spirv_hash = entry["spirv_hash"].value("fragment", std::string());
-    }
-    run.images.emplace(id, std::move(image));
-  }
-  return run;
+                                                                   manifest->size, size)));
+  return StoredRun{.dir = dir, .size = manifest->size, .tools = manifest->tools, .images = std::move(manifest->images)};
 }
 
 Result<ReferenceImage> load_stored_image(const StoredRun& run, const std::string& id, const std::string& scene) {
@@ -129,6 +94,7 @@ Result<ReferenceImage> load_stored_image(const StoredRun& run, const std::string
   if (!stored.scene.empty() && stored.scene != scene)
     return std::unexpected(stored_error(path, "the stored image was drawn with another scene (case parameters, light, "
                                               "ambient or tessellation differ)"));
+  if (auto ok = check_stored_exr(path, run.size); !ok) return std::unexpected(ok.error());
   auto pixels = read_image_file(path);
   if (!pixels) return std::unexpected(Error(pixels.error()).in_stage(ErrorStage::stored_images));
   if (pixels->channels != 5 || pixels->width != run.size || pixels->height != run.size)
@@ -161,15 +127,49 @@ std::string toolchain_difference(const ToolVersions& stored, const ToolVersions&
   return out;
 }
 
+std::vector<std::pair<std::string, std::string>> stored_reference_dirs(const std::string& against_dir,
+                                                                       const std::vector<Case>& cases) {
+  std::vector<std::pair<std::string, std::string>> dirs;
+  if (!against_dir.empty()) dirs.emplace_back(against_dir, "--against");
+  else
+    for (const Case& c : cases)
+      if (!c.reference_images.empty()) dirs.emplace_back(c.reference_images, "case '" + c.name + "'");
+  return dirs;
+}
+
+Result<void> check_stored_folders(const std::string& out_dir, const std::string& save_images_dir,
+                                  const std::vector<std::pair<std::string, std::string>>& judged_by) {
+  const auto refuse = [](std::string message) { return fail(ErrorStage::options, std::move(message)); };
+  const fs::path out = out_dir.empty() ? fs::path() : canonical_folder(out_dir);
+  const fs::path save = save_images_dir.empty() ? fs::path() : canonical_folder(save_images_dir);
+  for (const auto& [dir, who] : judged_by) {
+    const fs::path judged = canonical_folder(dir);
+    // "--against good", or "the reference images of case 'x' (DIR)": what judges the run.
+    const std::string what = who == "--against" ? who + " " + dir : fmt::format("the reference images of {} ({})", who, dir);
+    if (!save.empty())
+      if (const std::string relation = folder_relation(save, judged); !relation.empty())
+        return refuse(fmt::format("--save-images {} {} {}: the run would replace the known-good images that judge it "
+                                  "(save into another folder)",
+                                  save_images_dir, relation, what));
+    if (!out.empty())
+      if (const std::string relation = folder_relation(out, judged); !relation.empty())
+        return refuse(fmt::format("--out {} {} {}: the run's renders would be written over them (write them "
+                                  "elsewhere)",
+                                  out_dir, relation, what));
+  }
+  if (!out.empty() && !save.empty())
+    if (const std::string relation = folder_relation(out, save); !relation.empty())
+      return refuse(fmt::format("--out {} {} the --save-images folder {}: renders and error images would be written "
+                                "into the stored set (use two separate folders)",
+                                out_dir, relation, save_images_dir));
+  return {};
+}
+
 Result<StoredReferences> load_stored_references(const std::string& against_dir, int size,
                                                 const std::vector<Case>& cases, const ToolVersions& tools) {
   StoredReferences stored;
-  std::vector<std::string> dirs;
-  if (!against_dir.empty()) dirs.push_back(against_dir);
-  else
-    for (const Case& c : cases)
-      if (!c.reference_images.empty()) dirs.push_back(c.reference_images);
-  for (const std::string& dir : dirs) {
+  for (const auto& named : stored_reference_dirs(against_dir, cases)) {
+    const std::string& dir = named.first;
     if (stored.runs.contains(dir)) continue;
     auto run = load_stored_run(dir, size);
     if (!run) return std::unexpected(Error(run.error()).in_stage(against_dir.empty() ? ErrorStage::case_file : ErrorStage::against));

@@ -7,23 +7,17 @@
 // images drawn on real hardware.
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "compare/ImageComparison.h"
 #include "core/Error.h"
 #include "core/Image.h"
 #include "report/Results.h"
+#include "run/StoredManifest.h"
 #include "scene/CaseFile.h"
 
 namespace shaderbed {
-
-constexpr int kStoredImagesSchema = 1;
-
-struct StoredImage {
-  std::string file;        // relative to the folder
-  std::string scene;       // the scene fingerprint it was drawn with (scene_fingerprint)
-  std::string vertex_spirv_hash, fragment_spirv_hash;
-};
 
 struct StoredRun {
   std::string dir;
@@ -36,17 +30,15 @@ struct StoredRun {
 std::string stored_image_file(const CellResult& r);
 
 // Writes one cell's render under `dir` (whole or not at all: a temporary file renamed).
+// A run writes into its staging folder (run/StagedStoredImages.h), never into the set.
 Result<void> save_stored_image(const std::string& dir, const CellResult& r, const Image& image);
 
-// Adds the report's saved cells (those with artefacts.stored_exr) to DIR/manifest.json,
-// keeping the entries of earlier runs for other cells; a folder of another image size is
-// an error.
-Result<void> write_stored_manifest(const std::string& dir, const RunReport& report, int size);
-
-// Reads DIR/manifest.json; `size` must match the run's (a clear error otherwise).
+// Reads DIR/manifest.json (run/StoredManifest.h); `size` must match the run's (a clear
+// error otherwise).
 Result<StoredRun> load_stored_run(const std::string& dir, int size);
 
-// The stored image of cell `id` as a reference (coverage from its fifth channel).
+// The stored image of cell `id` as a reference (coverage from its fifth channel); a file
+// that is not a regular one of a plausible size is refused before it is decoded.
 Result<ReferenceImage> load_stored_image(const StoredRun& run, const std::string& id, const std::string& scene);
 
 // The stored runs a run compares with, loaded (and checked) before anything is drawn.
@@ -59,6 +51,18 @@ struct StoredReferences {
 // run's image size `size`; a different toolchain is noted, not refused.
 Result<StoredReferences> load_stored_references(const std::string& against_dir, int size,
                                                 const std::vector<Case>& cases, const ToolVersions& tools);
+
+// The folders of stored images the run is judged against: `against_dir` (--against), or
+// else each case's `reference = { images = ... }`, with who names it ("--against", "case 'x'").
+std::vector<std::pair<std::string, std::string>> stored_reference_dirs(const std::string& against_dir,
+                                                                       const std::vector<Case>& cases);
+
+// Refuses, before anything is drawn, folders that would overwrite stored images: --out or
+// --save-images that is (or is inside, or holds) a folder the run is judged against, and
+// --out that is (or is inside, or holds) --save-images. Compared as canonical paths, so a
+// symlink or `a/../a` is the same folder.
+Result<void> check_stored_folders(const std::string& out_dir, const std::string& save_images_dir,
+                                  const std::vector<std::pair<std::string, std::string>>& judged_by);
 
 // "" when the toolchains drew alike, else what differs ("Mesa 23.1 (stored) vs 22.3.6").
 std::string toolchain_difference(const ToolVersions& stored, const ToolVersions& now);

@@ -11,6 +11,7 @@
 #include "core/ThisExecutable.h"
 #include "core/WritablePath.h"
 #include "run/Runner.h"
+#include "run/StoredImages.h"
 #include "report/ConsoleProgress.h"
 #include "report/ConsoleReport.h"
 #include "report/JsonReport.h"
@@ -113,6 +114,15 @@ Command add_run_command(CLI::App& app) {
             if (!args->outputs.load_charts() || !args->outputs.check_writable()) return kExitBadInput;
             // An HTML report shows the images: without --out they go beside index.html.
             if (args->options.cell.out_dir.empty()) args->options.cell.out_dir = args->outputs.html;
+            // Checked before --out and --save-images are made: neither may be made inside the
+            // stored images that judge the run (a case's own are checked once it is read).
+            const CellSettings& cell = args->options.cell;
+            if (auto ok = check_stored_folders(cell.out_dir, cell.save_images_dir,
+                                               stored_reference_dirs(cell.against_dir, {}));
+                !ok) {
+              fmt::print(stderr, "shaderbed: {}\n", ok.error().to_string());
+              return kExitBadInput;
+            }
             for (const auto& [folder, option] : {std::pair{args->options.cell.out_dir, "--out"},
                                                   std::pair{args->options.cell.save_images_dir, "--save-images"}})
               if (!folder.empty())
@@ -136,12 +146,19 @@ Command add_run_command(CLI::App& app) {
             if (!args->outputs.write(*report)) return kExitFail;
             if (!options.cell.out_dir.empty())
               fmt::print("images: {}/<case>/<variant>/<shape>/\n", std::filesystem::absolute(options.cell.out_dir).string());
-            if (!options.cell.save_images_dir.empty())
+            if (!options.cell.save_images_dir.empty() && report->interruption)
+              fmt::print("stored images: none saved (the run was interrupted; {} is as it was)\n",
+                         options.cell.save_images_dir);
+            else if (!report->stored_images_lost.empty())
+              fmt::print(stderr, "shaderbed: stored images: none saved ({}); {} is as it was\n",
+                         report->stored_images_lost, options.cell.save_images_dir);
+            else if (!options.cell.save_images_dir.empty())
               fmt::print("stored images: {} (judge later runs with --against {})\n",
                          (std::filesystem::absolute(options.cell.save_images_dir) / "manifest.json").string(),
                          options.cell.save_images_dir);
             // Interrupted: the cells it had are written above, marked incomplete.
             if (report->interruption) return 128 + report->interruption->signal;
+            if (!report->stored_images_lost.empty()) return kExitFail;
             // A uniform the case leaves unbound is the case's mistake, found before its cells
             // were drawn: bad input, like a missing shader file.
             const size_t unbound = std::ranges::count_if(report->results, [](const CellResult& r) {
