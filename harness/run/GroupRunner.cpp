@@ -144,7 +144,8 @@ struct GroupRunner::Impl final : GroupDrawer {
       r.time_ms["reference"] = reference_ms;
       r.scene_hash = scene_hash;
       if (image) announce(r.id(), "write");
-      Result<void> judged = !image ? Result<void>(std::unexpected(image.error())) : save_image(*image, r);
+      Result<void> judged = image ? Result<void>{} : Result<void>(std::unexpected(image.error()));
+      if (image) save_image(*image, r);
       if (judged && group_image) {
         judged = *group_image ? judge_cell(*image, **group_image, classes_, dir, false, r)
                               : Result<void>(std::unexpected(group_image->error()));
@@ -462,11 +463,14 @@ struct GroupRunner::Impl final : GroupDrawer {
   }
 
   // `--save-images DIR`: the render, whole, for later runs to be judged against.
-  Result<void> save_image(const Image& image, CellResult& r) {
-    if (settings_.save_images_dir.empty()) return {};
-    if (auto ok = save_stored_image(settings_.save_images_dir, r, image); !ok) return ok;
+  void save_image(const Image& image, CellResult& r) {
+    if (settings_.save_images_dir.empty()) return;
+    // Not saved (a full disk): the cell keeps its verdict and the set goes without it.
+    if (auto ok = save_stored_image(settings_.save_images_dir, r, image); !ok) {
+      r.warnings.push_back("stored image not saved: " + ok.error().to_string());
+      return;
+    }
     r.artefacts.stored_exr = (fs::path(settings_.save_images_dir) / stored_image_file(r)).string();
-    return {};
   }
 
   // What the image depends on besides the shaders: stored images drawn with another scene
