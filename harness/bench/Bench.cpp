@@ -24,7 +24,7 @@ Result<BenchReport> run_bench(const BenchOptions& o) {
   for (const std::string& c : o.cases) processes.suite_args.insert(processes.suite_args.end(), {"--case", c});
   processes.suite_args.insert(processes.suite_args.end(), {"--size", std::to_string(o.size), "--jobs", std::to_string(o.jobs)});
   if (!o.cases_dir.empty()) processes.suite_args.insert(processes.suite_args.end(), {"--cases-dir", o.cases_dir});
-  if (!o.out_dir.empty()) processes.suite_args.insert(processes.suite_args.end(), {"--out", o.out_dir});
+  if (!o.out_dir.empty()) processes.suite_args.insert(processes.suite_args.end(), {"--out", o.out_dir, "--keep-images", "all"});
   auto measured = measure_processes(processes);
   if (!measured) return std::unexpected(measured.error());
 

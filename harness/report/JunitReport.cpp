@@ -64,9 +64,14 @@ std::string details(const CellResult& r) {
   return out;
 }
 
-std::string system_out(const CellResult& r) {
+std::string warning_lines(const CellResult& r) {
   std::string out;
   for (const std::string& w : r.warnings) out += "warning: " + w + "\n";
+  return out;
+}
+
+std::string system_out(const CellResult& r) {
+  std::string out = warning_lines(r);
   for (const std::string& line : twin_lines(r)) out += line + "\n";
   for (const auto& [stage, ms] : r.time_ms)
     out += fmt::format("{} {:.3f} ms{}\n", stage, ms, shared_stage(stage) ? " (shared)" : "");
@@ -146,9 +151,13 @@ std::string to_junit(const RunReport& report) {
                          escape(r.attribution.empty() ? "fail" : r.attribution, true), escape(message, true),
                          escape(details(r)));
       }
-      // A CI's test view shows a failure's context; a passing case's would be most of the file.
-      if (r.status != CellStatus::pass)
+      // A CI's test view shows a failure's context; a passing case's would be most of the
+      // file, so it gets its warnings only.
+      if (r.status != CellStatus::pass) {
         x += fmt::format("      <system-out>{}</system-out>\n", escape(system_out(r)));
+      } else if (!r.warnings.empty()) {
+        x += fmt::format("      <system-out>{}</system-out>\n", escape(warning_lines(r)));
+      }
       x += "    </testcase>\n";
     }
     x += "  </testsuite>\n";

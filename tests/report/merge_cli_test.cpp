@@ -34,7 +34,7 @@ std::string file_text(const fs::path& path) {
 std::string one_cell_run(const TempDir& dir) {
   const std::string json = dir / "out/a.json";
   auto [status, out] = shaderbed_cli("run --case lambert --variant pixel --lang glsl --backend vulkan --shape sphere "
-                                     "--size 16 --quiet --out " + (dir / "out") + " --json " + json);
+                                     "--size 16 --quiet --keep-images all --out " + (dir / "out") + " --json " + json);
   EXPECT_EQ(status, 0) << out;
   return json;
 }

@@ -82,7 +82,7 @@ TEST(Caches, ColdWarmAndOffRunsGiveIdenticalMetricsAndImages) {
   const fs::path root = work.path() / "cache";
   const std::string cells = "run --case phong,ward_iso --size 32 --repeat 0";
 
-  auto [cold_status, cold_out] = shaderbed_cli(root, cells + " --json " + work / "A.json" + " --out " + work / "A");
+  auto [cold_status, cold_out] = shaderbed_cli(root, cells + " --json " + work / "A.json" + " --keep-images all --out " + work / "A");
   ASSERT_EQ(cold_status, 0) << cold_out;
   const auto mesa_cold = snapshot(root / "mesa");
   const auto compile_cold = snapshot(root / "compile");
@@ -104,7 +104,7 @@ TEST(Caches, ColdWarmAndOffRunsGiveIdenticalMetricsAndImages) {
   EXPECT_EQ(parsed->cache->compile_memory_hits, a["cache"]["compile"]["memory_hits"].get<size_t>());
   EXPECT_EQ(nlohmann::json::parse(to_json(*parsed))["cache"], a["cache"]);
 
-  auto [warm_status, warm_out] = shaderbed_cli(root, cells + " --json " + work / "B.json" + " --out " + work / "B");
+  auto [warm_status, warm_out] = shaderbed_cli(root, cells + " --json " + work / "B.json" + " --keep-images all --out " + work / "B");
   ASSERT_EQ(warm_status, 0) << warm_out;
   const nlohmann::json b = load_json(work / "B.json");
   EXPECT_GT(b["cache"]["compile"]["hits"].get<size_t>(), 0u);
@@ -113,7 +113,7 @@ TEST(Caches, ColdWarmAndOffRunsGiveIdenticalMetricsAndImages) {
   EXPECT_EQ(snapshot(root / "compile"), compile_cold);
 
   auto [off_status, off_out] = shaderbed_cli(
-      root, "--no-driver-cache " + cells + " --no-compile-cache --json " + work / "C.json" + " --out " + work / "C");
+      root, "--no-driver-cache " + cells + " --no-compile-cache --json " + work / "C.json" + " --keep-images all --out " + work / "C");
   ASSERT_EQ(off_status, 0) << off_out;
   const nlohmann::json c = load_json(work / "C.json");
   EXPECT_EQ(c["cache"]["driver"]["enabled"], false);

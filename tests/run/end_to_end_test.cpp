@@ -106,7 +106,8 @@ TEST(EndToEnd, CliPassesWritesJsonAndImages) {
   const fs::path dir = fs::temp_directory_path() / ("shaderbed_cli_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   const fs::path json = dir / "r.json";
-  auto [status, out] = shaderbed_cli("run --case lambert --shape cube,torus --backend vulkan --backend gl --size 64 --out " +
+  auto [status, out] = shaderbed_cli("run --case lambert --shape cube,torus --backend vulkan --backend gl --size 64 "
+                                     "--keep-images all --out " +
                                      dir.string() + " --json " + json.string());
   EXPECT_EQ(status, 0) << out;
   EXPECT_NE(out.find("lambert"), std::string::npos);

@@ -32,6 +32,7 @@ RunOptions small_run(const std::string& cases_dir, std::vector<std::string> case
   o.cell.size = 48;
   o.select.shapes = {"cube", "torus"};
   o.cell.out_dir = out;
+  o.cell.keep_images = "all";
   o.cell.timing = {.warmup = 0, .runs = 0};
   return o;
 }

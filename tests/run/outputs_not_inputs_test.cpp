@@ -61,4 +61,16 @@ TEST(OutputsNotInputs, InitRefusesItsShaderAsTheCase) {
                  "--out");
 }
 
+TEST(OutputsNotInputs, MergeAndStatsRefuseToWriteOverWhatTheyRead) {
+  TempDir dir("out_in_merge");
+  const fs::path c = copy_blinn_phong_case(dir.path());
+  const std::string shard = dir / "shard.json";
+  ASSERT_EQ(shaderbed_cli("run --case " + c.string() + " --backend vulkan --shape sphere --size 16 --repeat 0 --json " +
+                          shard).first, 0);
+  expect_refused("merge " + shard + " --json " + shard, shard, "--json");
+  const std::string counts = dir / "counts.json";
+  ASSERT_EQ(shaderbed_cli("stats --cases-dir " + (dir / "cases") + " --no-nir --json " + counts).first, 0);
+  expect_refused("stats --from " + counts + " --baseline " + counts + " --json " + counts, counts, "--json");
+}
+
 }  // namespace

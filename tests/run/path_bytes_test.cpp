@@ -24,7 +24,7 @@ TEST(PathBytes, LatinOneFoldersReachTheWorkers) {
   copy_blinn_phong_case(root);
   const fs::path out = dir.path() / "r\xe9sultats";
   const auto [status, text] = shaderbed_cli("run --cases-dir '" + (root / "cases").string() +
-                                             "' --backend vulkan --shape sphere --size 16 --repeat 0 --out '" +
+                                             "' --backend vulkan --shape sphere --size 16 --repeat 0 --keep-images all --out '" +
                                              out.string() + "'");
   EXPECT_EQ(status, 0) << text;
   EXPECT_NE(text.find("1 passed"), std::string::npos) << text;

@@ -34,7 +34,7 @@ constexpr int kSize = 128;   // small windows keep the area quick
 // `run` draws the cells into DIR (its --out layout) and reports them in DIR/results.json.
 nlohmann::json run_cells(const TempDir& dir, const std::string& filters) {
   const auto [status, out] = run_shell(kBinary + " run " + filters + " --size " + std::to_string(kSize) +
-                                       " --repeat 0 -q --out " + (dir / "run") + " --json " + (dir / "results.json"));
+                                       " --repeat 0 -q --keep-images all --out " + (dir / "run") + " --json " + (dir / "results.json"));
   EXPECT_EQ(status, 0) << out;
   std::ifstream in(dir / "results.json");
   return nlohmann::json::parse(in, nullptr, false);

@@ -38,7 +38,9 @@ Command add_merge_command(CLI::App& app) {
   args->outputs.add_options(cmd);
   add_console_flags(cmd, args->console);
   return {cmd, [args] {
-            if (!args->outputs.load_charts() || !args->outputs.check_writable()) return kExitBadInput;
+            if (!args->outputs.load_charts() || !args->outputs.check_writable() ||
+                !args->outputs.check_not_inputs(args->inputs))
+              return kExitBadInput;
             std::vector<RunReport> parts;
             std::map<std::string, std::pair<std::string, std::string>> origin;   // cell id -> its file, its run folder
             for (const std::string& path : args->inputs) {

@@ -83,6 +83,15 @@ std::vector<std::pair<std::string, std::string>> ReportOutputs::files() const {
   return written;
 }
 
+bool ReportOutputs::check_not_inputs(const std::vector<std::string>& inputs) const {
+  for (const auto& [path, option] : files())
+    if (auto ok = check_not_an_input(path, option, inputs); !ok) {
+      fmt::print(stderr, "shaderbed: {}\n", ok.error().to_string());
+      return false;
+    }
+  return true;
+}
+
 bool ReportOutputs::write(const RunReport& report, const RunReport* html_view,
                           const std::vector<std::string>& html_notes) const {
   auto done = [](const Result<void>& ok, const char* what, const std::string& path) {

@@ -29,6 +29,8 @@ struct ReportOutputs {
   // The files write() will write, with their options, for the run to refuse one that is
   // an input: (path, "--json"), ...
   std::vector<std::pair<std::string, std::string>> files() const;
+  // False (after printing why) when a report file would be written over one of `inputs`.
+  bool check_not_inputs(const std::vector<std::string>& inputs) const;
   // Writes what was asked for; prints where; false (after printing the error) on failure.
   // `html_view` (merge): the report the HTML page shows instead, with `html_notes` on it.
   bool write(const RunReport& report, const RunReport* html_view = nullptr,

@@ -10,6 +10,7 @@
 
 #include "cli/commands/Command.h"
 #include "compile/IsolatedCompile.h"
+#include "core/WritablePath.h"
 #include "run/Runner.h"
 #include "stats/Baseline.h"
 #include "stats/Collect.h"
@@ -55,6 +56,12 @@ Command add_stats_command(CLI::App& app) {
               fmt::print(stderr, "shaderbed: {}\n", ok.error().to_string());
               return kExitBadInput;
             }
+            for (const auto& [path, option] : {std::pair{args->json, "--json"}, std::pair{args->csv, "--csv"}})
+              if (!path.empty())
+                if (auto ok = check_not_an_input(path, option, {args->from, args->baseline}); !ok) {
+                  fmt::print(stderr, "shaderbed: {}\n", ok.error().to_string());
+                  return kExitBadInput;
+                }
             if (args->fail_above >= 0 && args->baseline.empty()) {
               fmt::print(stderr, "shaderbed: --fail-above needs --baseline\n");
               return kExitBadInput;
