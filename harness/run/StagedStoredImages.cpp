@@ -1,7 +1,6 @@
 #include "run/StagedStoredImages.h"
 
 #include <fcntl.h>
-#include <signal.h>
 #include <sys/file.h>
 #include <unistd.h>
 
@@ -15,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "core/AtomicFile.h"
+#include "core/SignalsHeld.h"
 #include "run/StoredImages.h"
 #include "run/StoredManifest.h"
 
@@ -42,24 +42,6 @@ int lock_file(const fs::path& path, bool wait, bool create) {
   }
   return fd;
 }
-
-// SIGINT, SIGTERM and SIGHUP wait while the set is being replaced (a few renames and one
-// write): a stop in the middle would leave some new images beside the old manifest.
-class SignalsHeld {
- public:
-  SignalsHeld() {
-    sigset_t held;
-    sigemptyset(&held);
-    for (int s : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&held, s);
-    ::pthread_sigmask(SIG_BLOCK, &held, &old_);
-  }
-  ~SignalsHeld() { ::pthread_sigmask(SIG_SETMASK, &old_, nullptr); }
-  SignalsHeld(const SignalsHeld&) = delete;
-  SignalsHeld& operator=(const SignalsHeld&) = delete;
-
- private:
-  sigset_t old_{};
-};
 
 // The staging folders of runs that are gone (killed before they could remove their own):
 // those whose owner lock can be taken. Called with DIR locked.
@@ -126,7 +108,7 @@ StagedStoredImages::~StagedStoredImages() {
 }
 
 Result<void> StagedStoredImages::commit(RunReport& report) {
-  const SignalsHeld held;
+  const SignalsHeld held;   // a stop half-way would leave new images beside the old manifest
   const fs::path dir(dir_);
   const int lock = lock_file(dir / ".lock", true, true);
   if (lock < 0) return std::unexpected(staging_error(dir_, std::string("cannot lock the folder: ") + std::strerror(errno)));

@@ -44,6 +44,14 @@ def main():
     return max(probe(a.shaderbed, a.cases, a.size, 1024), probe_stored_set(a.shaderbed, a.cases, a.size))
 
 
+def verdict(problems, out):
+    for p in problems[:10]:
+        print("FAIL:", p)
+    if problems:
+        print(out[-3000:])
+    return 1 if problems else 0
+
+
 def fill(folder):
     """Writes a filler file until the disk (or the file size cap) says no."""
     try:
@@ -100,11 +108,7 @@ def probe_stored_set(shaderbed, cases, size):
                 problems.append("the known-good set changed")
             print(f"--save-images on a full {'1 MiB tmpfs' if mounted else 'RLIMIT_FSIZE 16 KiB'}: exit "
                   f"{run.returncode}, set {'unchanged' if 'the known-good set changed' not in problems else 'CHANGED'}")
-            for p in problems:
-                print("FAIL:", p)
-            if problems:
-                print(out[-3000:])
-            return 1 if problems else 0
+            return verdict(problems, out)
         finally:
             if mounted:
                 subprocess.run(["umount", full])
@@ -157,11 +161,7 @@ def probe(shaderbed, cases, size, kib):
             if empty:
                 problems.append(f"{len(empty)} empty files at their final names, e.g. {empty[0]}")
             print(f"{len(cells)} cells, {len(lost)} say what they lost, {len(errors)} errors")
-            for p in problems[:10]:
-                print("FAIL:", p)
-            if problems:
-                print(out[-3000:])
-            return 1 if problems else 0
+            return verdict(problems, out)
         finally:
             if mounted:
                 subprocess.run(["umount", full])

@@ -76,17 +76,21 @@ void main() {
 }
 )";
 
-TEST(Isolation, ACompilerCrashIsAnErrorCellAndTheRunGoesOn) {
-  shaderbed::test::TempDir dir("isolation");
-  // A Cg entry parameter without a name crashes glslang 12 through the Cg dialect layer
-  // (6 of 3400 mutation-fuzzing runs of the library's Cg shaders).
-  const std::string the_case = write_case(dir, "cg", R"(// Lambert's vertex stage (book §5.5) in Cg.
+// A Cg case whose fragment entry parameter has no name: it crashes glslang 12 through the
+// Cg dialect layer (6 of 3400 mutation-fuzzing runs of the library's Cg shaders).
+std::string write_crashing_cg_case(const shaderbed::test::TempDir& dir) {
+  return write_case(dir, "cg", R"(// Lambert's vertex stage (book §5.5) in Cg.
 float4 main(float4 p : POSITION, uniform float4x4 Transform) : POSITION { return mul(Transform, p); }
 )",
                                           R"(// A Cg fragment program with an unnamed entry parameter (crashes glslang 12).
 float4 main(float3 : TEXCOORD0) : COLOR { return float4(1, 1, 1, 1); }
 )",
                                           "Transform = \"transform\"\n");
+}
+
+TEST(Isolation, ACompilerCrashIsAnErrorCellAndTheRunGoesOn) {
+  shaderbed::test::TempDir dir("isolation");
+  const std::string the_case = write_crashing_cg_case(dir);
   const std::string results = dir / "r.json";
   const auto [status, out] = shaderbed_cli("run --case " + the_case + " --shape sphere,cube --size 32 --repeat 0 -q --json " + results);
   EXPECT_EQ(status, 1) << out;
@@ -201,13 +205,7 @@ TEST(Isolation, AnInterruptedRunWritesWhatItHasMarkedIncomplete) {
 // are errors saying so, and the run still writes its report.
 TEST(Isolation, AReplacementWorkerKilledBeforeItsHelloCostsItsCellsNotTheRun) {
   shaderbed::test::TempDir dir("isolation");
-  const std::string the_case = write_case(dir, "cg", R"(// Lambert's vertex stage (book §5.5) in Cg.
-float4 main(float4 p : POSITION, uniform float4x4 Transform) : POSITION { return mul(Transform, p); }
-)",
-                                          R"(// A Cg fragment program with an unnamed entry parameter (crashes glslang 12).
-float4 main(float3 : TEXCOORD0) : COLOR { return float4(1, 1, 1, 1); }
-)",
-                                          "Transform = \"transform\"\n");
+  const std::string the_case = write_crashing_cg_case(dir);
   const std::string results = dir / "r.json";
   const auto [status, out] = shaderbed::test::run_shell(
       "SHADERBED_TEST_WORKER_FAULT=KILL@start:2+ timeout -s KILL 120 " + std::string(SHADERBED_BINARY) +

@@ -8,6 +8,7 @@
 
 #include "cli/commands/Command.h"
 #include "cli/commands/ReportOutputs.h"
+#include "core/SignalsHeld.h"
 #include "core/ThisExecutable.h"
 #include "core/WritablePath.h"
 #include "run/Runner.h"
@@ -142,6 +143,9 @@ Command add_run_command(CLI::App& app) {
               fmt::print(stderr, "shaderbed: {}\n", report.error().to_string());
               return kExitBadInput;
             }
+            // A signal now waits until the reports are written: the run is over, and a stop
+            // between them would keep some and lose others.
+            const SignalsHeld held;
             print_console_report(*report, stdout, args->console);
             if (!args->outputs.write(*report)) return kExitFail;
             if (!options.cell.out_dir.empty())
