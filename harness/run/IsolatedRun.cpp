@@ -347,7 +347,6 @@ class Supervisor {
       case WorkerEvent::Kind::hello:
         w.greeted = true;
         w.start_failures = 0;
-        ever_greeted_ = true;
         w.step.clear();
         if (out_.tools.glslang.empty()) out_.tools = event->report.tools;
         next_group(w);
@@ -495,7 +494,7 @@ class Supervisor {
 
   // A worker ended before its hello: another is started in its place, a few times; then
   // the slot gives up and the cells it had left (every queued one, when no slot is left)
-  // become errors. Only when no worker of the run ever started is the run an Error.
+  // become errors, and the run writes its report even when no worker ever started.
   Result<void> failed_start(Worker& w, std::string how) {
     retired_counts_ = retired_counts_ + w.counts;
     const std::optional<size_t> bundle = w.bundle;
@@ -516,8 +515,6 @@ class Supervisor {
     const std::string message = fmt::format("worker could not be started: {} ({} tr{})", how, failures,
                                             failures == 1 ? "y" : "ies");
     const bool last_slot = std::ranges::none_of(workers_, [&](const Worker& other) { return &other != &w && other.pid > 0; });
-    if (last_slot && !ever_greeted_)
-      return fail(ErrorStage::isolation, "the cell worker (" + o_.workers.worker_binary + ") ended before it started: " + how);
     give_up(w, bundle, position, message);
     if (last_slot)
       while (!queue_.empty()) {
@@ -563,7 +560,6 @@ class Supervisor {
   std::map<size_t, std::vector<CellResult>> settled_;  // by group: cells the supervisor decided
   std::map<std::string, std::string> crashed_programs_;   // case/variant/language -> the message
   CompileCacheCounts retired_counts_;                  // of workers that are gone
-  bool ever_greeted_ = false;                          // some worker of the run started
   IsolatedResults out_;
 };
 

@@ -230,6 +230,25 @@ TEST(Isolation, AReplacementWorkerKilledBeforeItsHelloCostsItsCellsNotTheRun) {
   EXPECT_EQ(j["results"].size(), 4u);
 }
 
+// Every worker killed before its hello, the first too: no cell can be drawn, and the run
+// still writes its report, every cell an error saying why (the slow probe
+// tests/reliability/supervisor_signals.py found the run ending with no report).
+TEST(Isolation, NoWorkerEverStartingStillWritesTheReport) {
+  shaderbed::test::TempDir dir("isolation");
+  const std::string results = dir / "r.json";
+  const auto [status, out] = shaderbed::test::run_shell(
+      "SHADERBED_TEST_WORKER_FAULT=KILL@start:1+ timeout -s KILL 120 " + std::string(SHADERBED_BINARY) +
+      " run --case lambert --variant pixel --lang glsl --shape sphere,cube --backend vulkan --size 16 --repeat 0 -j1 -q"
+      " --json " + results);
+  EXPECT_EQ(status, 1) << out;
+  const json j = read_json(results);
+  ASSERT_EQ(j["results"].size(), 2u) << j.dump(2);
+  for (const json& r : j["results"]) {
+    EXPECT_EQ(r["status"], "error") << r["id"];
+    EXPECT_NE(std::string(r["message"]).find("worker could not be started"), std::string::npos) << r["message"];
+  }
+}
+
 // SIGHUP (a closed terminal) ends the run like SIGINT, and the Ctrl-C presses that follow
 // it while the report is written do not end the process before it is.
 TEST(Isolation, AHangUpAndRepeatedInterruptsStillWriteThePartialReport) {
