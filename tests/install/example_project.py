@@ -52,7 +52,12 @@ with tempfile.TemporaryDirectory(prefix="shaderbed-install-") as tmp:
     os.makedirs(elsewhere)
     env = {k: v for k, v in os.environ.items() if k != "SHADERBED_ROOT"}
 
+    if not os.path.isfile(built_binary):
+        fail(f"{built_binary} is not built: the install copies what `shaderbed` built")
+    built_at = os.stat(built_binary).st_mtime_ns
     run([cmake, "--install", build, "--prefix", prefix], cwd=elsewhere, env=env)
+    if os.stat(built_binary).st_mtime_ns != built_at:
+        fail("installing rebuilt the program")
     binary = os.path.join(prefix, "bin", "shaderbed")
     for relative in ("bin/shaderbed", "bin/shaderbed-nir-dump", "lib/shaderbed/libshaderbed_imageio.so",
                      "share/shaderbed/shaders/cases/lambert.toml", "share/shaderbed/shaders/glsl/lambert.frag",
@@ -61,17 +66,19 @@ with tempfile.TemporaryDirectory(prefix="shaderbed-install-") as tmp:
                      "lib/cmake/shaderbed/shaderbedConfigVersion.cmake", "lib/cmake/shaderbed/ShaderbedCases.cmake"):
         if not os.path.isfile(os.path.join(prefix, relative)):
             fail(f"the install has no {relative}")
-    if os.path.getsize(binary) != os.path.getsize(built_binary):
-        fail(f"bin/shaderbed is not the binary the build made ({built_binary})")
 
     # The installed tree's own cases are the default: a case only the install holds runs.
     copy_example_case(os.path.join(prefix, "share", "shaderbed", "shaders"), "installed_only")
     cell = ["--backend", "vulkan", "--lang", "glsl", "--shape", "sphere", "--size", "16", "--repeat", "0", "-q"]
     out = os.path.join(tmp, "out")
+    # The dynamic loader's own log (of the supervisor and its workers) names the module opened.
+    loader_log = os.path.join(tmp, "loader")
+    os.makedirs(loader_log)
     r = run([binary, "run", "--case", "installed_only", *cell, "--out", out, "--keep-images", "all"], cwd=elsewhere,
-            env={**env, "LD_DEBUG": "files"})
+            env={**env, "LD_DEBUG": "files", "LD_DEBUG_OUTPUT": os.path.join(loader_log, "ld")})
     module = os.path.join(prefix, "lib", "shaderbed", "libshaderbed_imageio.so")
-    if f"file={module}" not in r.stderr:
+    opened = "".join(open(os.path.join(loader_log, name), errors="replace").read() for name in os.listdir(loader_log))
+    if f"file={module}" not in opened:
         fail("the installed binary did not dlopen the installed image module " + module, r)
     if not any(name.endswith(".png") for _, _, files in os.walk(out) for name in files):
         fail("the installed binary wrote no image into --out", r)
