@@ -8,6 +8,7 @@
 #include <mutex>
 
 #include "core/AtomicFile.h"
+#include "core/InstalledTree.h"
 #include "core/ThisExecutable.h"
 #include "imageio/ModuleAbi.h"
 
@@ -22,10 +23,12 @@ struct LoadedModule {
   std::string error;
 };
 
-// Next to the running binary first (an installed or copied tree), else where the build put it.
+// Next to the running binary first (a copied tree), then an installed tree's lib/shaderbed,
+// else where the build put it.
 std::vector<fs::path> module_candidates() {
   std::vector<fs::path> candidates;
   if (const fs::path self = this_executable(); !self.empty()) candidates.push_back(self.parent_path() / kModuleName);
+  if (const fs::path installed = installed_module_dir(); !installed.empty()) candidates.push_back(installed / kModuleName);
   candidates.push_back(SHADERBED_IMAGEIO_MODULE);
   return candidates;
 }

@@ -20,6 +20,7 @@
 #include "core/ClosestName.h"
 #include "core/Elapsed.h"
 #include "core/Fnv1a.h"
+#include "core/InstalledTree.h"
 #include "core/WritablePath.h"
 #include "prt/ShCase.h"
 #include "run/CaseUniforms.h"
@@ -172,8 +173,10 @@ std::vector<CellResult> run_in_process(const RunOptions& o, const SceneSetup& sc
 }  // namespace
 
 std::string default_cases_dir() {
-  if (const char* root = std::getenv("SHADERBED_ROOT")) return (fs::path(root) / "shaders" / "cases").string();
-  return (fs::path(SHADERBED_SOURCE_DIR) / "shaders" / "cases").string();
+  fs::path root = SHADERBED_SOURCE_DIR;
+  if (const char* env = std::getenv("SHADERBED_ROOT"); env != nullptr && *env != '\0') root = env;
+  else if (fs::path installed = installed_data_dir(); !installed.empty()) root = installed;
+  return (root / "shaders" / "cases").string();
 }
 
 void sort_results(RunReport& report) {

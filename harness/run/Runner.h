@@ -45,7 +45,8 @@ Result<RunReport> run_suite(const RunOptions& options);
 // Results in one canonical order (by cell id), so shards merged equal one whole run.
 void sort_results(RunReport& report);
 
-// Where the source tree's shaders/cases folder is: $SHADERBED_ROOT/shaders/cases, else the
+// The library's cases, ROOT/shaders/cases, ROOT being the first of: $SHADERBED_ROOT; the
+// installed tree this binary sits in (bin/../share/shaderbed, core/InstalledTree.h); the
 // source directory this binary was built from.
 std::string default_cases_dir();
 
