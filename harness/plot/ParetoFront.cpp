@@ -2,40 +2,39 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <tuple>
 
 namespace shaderbed {
 
+namespace {
+
+double low(const CostError& p) { return std::isnan(p.cost_low) ? p.cost : p.cost_low; }
+double high(const CostError& p) { return std::isnan(p.cost_high) ? p.cost : p.cost_high; }
+
+bool is_finite(const CostError& p) {
+  return std::isfinite(p.cost) && std::isfinite(p.error) && std::isfinite(low(p)) && std::isfinite(high(p));
+}
+
+}  // namespace
+
 bool dominates(const CostError& a, const CostError& b) {
-  return a.cost <= b.cost && a.error <= b.error && (a.cost < b.cost || a.error < b.error);
+  return a.error <= b.error && high(a) <= low(b) && (a.error < b.error || high(a) < low(b));
 }
 
 ParetoFront find_pareto_front(std::span<const CostError> points) {
   ParetoFront result;
   std::vector<std::size_t> finite;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const bool ok = std::isfinite(points[i].cost) && std::isfinite(points[i].error);
-    (ok ? finite : result.non_finite).push_back(i);
-  }
+  for (std::size_t i = 0; i < points.size(); ++i) (is_finite(points[i]) ? finite : result.non_finite).push_back(i);
   std::sort(finite.begin(), finite.end(), [&](std::size_t a, std::size_t b) {
     return std::tuple(points[a].cost, points[a].error, a) < std::tuple(points[b].cost, points[b].error, b);
   });
-
-  // Sweep by increasing cost, one group of equal cost at a time. Within a group only the
-  // lowest error can survive; it survives when it beats every error seen at a strictly
-  // lower cost (an equal error at a lower cost dominates it).
-  double best_error_so_far = std::numeric_limits<double>::infinity();
-  for (std::size_t begin = 0; begin < finite.size();) {
-    const double cost = points[finite[begin]].cost;
-    std::size_t end = begin;
-    while (end < finite.size() && points[finite[end]].cost == cost) ++end;
-    const double group_best = points[finite[begin]].error;  // sorted: the group's lowest error comes first
-    if (group_best < best_error_so_far) {
-      for (std::size_t k = begin; k < end && points[finite[k]].error == group_best; ++k) result.front.push_back(finite[k]);
-      best_error_so_far = group_best;
-    }
-    begin = end;
+  // Each point against every other: with intervals the cheapest-so-far sweep no longer
+  // holds (a point's rival may sit on either side of its median), and a scene's points
+  // number in the thousands at most.
+  for (std::size_t i : finite) {
+    bool dominated = false;
+    for (std::size_t j : finite) dominated = dominated || (j != i && dominates(points[j], points[i]));
+    if (!dominated) result.front.push_back(i);
   }
   return result;
 }

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -43,6 +44,8 @@ std::vector<Series> group_by_series(const std::vector<ChartPoint>& points) {
 }
 
 bool is_finite_point(const ChartPoint& p) { return std::isfinite(p.cost) && std::isfinite(p.error); }
+
+bool has_interval(const ChartPoint& p) { return std::isfinite(p.cost_low) && std::isfinite(p.cost_high); }
 
 std::string non_finite_label(const ChartPoint& p) {
   std::string what;
@@ -84,9 +87,14 @@ std::vector<std::string> write_data(const ChartInputs& in, const std::string& da
   std::vector<std::string> clauses;
   int block = 0;
   const std::string file = gnuplot_string(data_file);
+  // Columns: x, y, then the cost interval's ends (the point itself when it has none).
   auto emit_block = [&](const std::vector<std::size_t>& indices) {
-    for (std::size_t i : indices)
-      data << fmt::format("{:.17g} {:.17g}\n", in.x.position(in.points[i].cost), in.y.position(in.points[i].error));
+    for (std::size_t i : indices) {
+      const ChartPoint& p = in.points[i];
+      const double x = in.x.position(p.cost);
+      data << fmt::format("{:.17g} {:.17g} {:.17g} {:.17g}\n", x, in.y.position(p.error),
+                          has_interval(p) ? in.x.position(p.cost_low) : x, has_interval(p) ? in.x.position(p.cost_high) : x);
+    }
     data << "\n\n";
     return block++;
   };
@@ -101,7 +109,10 @@ std::vector<std::string> write_data(const ChartInputs& in, const std::string& da
       if (is_finite_point(in.points[i])) finite.push_back(i);
     if (finite.empty()) continue;
     const std::string title = in.series[s].name.empty() ? "points" : in.series[s].name;
-    clauses.push_back(fmt::format("{} index {} using 1:2 with points pt {} ps 1.4 lc rgb '{}' title {}", file, emit_block(finite),
+    // A series with measured intervals draws each point with its bar, in the series' colour.
+    const bool bars = std::ranges::any_of(finite, [&](std::size_t i) { return has_interval(in.points[i]); });
+    clauses.push_back(fmt::format("{} index {} using {} pt {} ps 1.4 lc rgb '{}' title {}", file, emit_block(finite),
+                                  bars ? "1:2:3:4 with xerrorbars lw 1.2" : "1:2 with points",
                                   kSeriesPointTypes[s % kSeriesPointTypes.size()], kSeriesColours[s % kSeriesColours.size()],
                                   gnuplot_string(title)));
   }
@@ -210,8 +221,12 @@ Result<ChartFiles> write_speed_error_chart(const std::vector<ChartPoint>& points
   std::vector<CostError> cost_error;
   for (const ChartPoint& p : points) {
     costs.push_back(p.cost), errors.push_back(p.error);
-    cost_error.push_back({p.cost, p.error});
+    constexpr double kNone = std::numeric_limits<double>::quiet_NaN();   // half an interval is none
+    cost_error.push_back({p.cost, p.error, has_interval(p) ? p.cost_low : kNone, has_interval(p) ? p.cost_high : kNone});
   }
+  // The cost axis spans the error bars too (after the points, so a NaN point's place is kept).
+  for (const ChartPoint& p : points)
+    if (has_interval(p) && is_finite_point(p)) costs.push_back(p.cost_low), costs.push_back(p.cost_high);
   ChartInputs in{points, spec, plan_axis(costs, spec.x_scale, "cost"), plan_axis(errors, spec.y_scale, "error"),
                  find_pareto_front(cost_error), group_by_series(points), {}};
   for (const ChartAxis* axis : {&in.x, &in.y})

@@ -1,8 +1,9 @@
 #pragma once
 // The speed-vs-error chart of a sweep: every variant as one point (cost across, error
-// up), one colour and marker per series, each point labelled, the Pareto front drawn
-// through its points. Drawn by gnuplot into a PNG (to look at) and an SVG (to inline
+// up), one colour and marker per series, each point labelled, a measured cost's
+// confidence interval as a horizontal error bar, the Pareto front drawn through its points. Drawn by gnuplot into a PNG (to look at) and an SVG (to inline
 // into the HTML report).
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,10 @@ struct ChartPoint {
   std::string series;  // points of one series share a colour and marker
   double cost = 0;     // e.g. GPU time; NaN/Inf allowed (drawn at the edge, flagged)
   double error = 0;    // e.g. interior RMSE; NaN/Inf allowed
+  // The cost's confidence interval (a median's: timing/MedianInterval), drawn as an error
+  // bar and used by the front (points within noise are not ordered). NaN = no interval.
+  double cost_low = std::numeric_limits<double>::quiet_NaN();
+  double cost_high = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct ChartSpec {

@@ -5,6 +5,7 @@
 // shows the run is alive without a line per cell.
 #include <chrono>
 #include <cstdio>
+#include <string_view>
 
 #include "report/Results.h"
 
@@ -16,8 +17,13 @@ class ConsoleProgress {
   ConsoleProgress(std::FILE* out, bool terminal, bool quiet = false);
   // Call once per finished cell, one call at a time (RunOptions::on_cell's guarantee).
   void update(size_t done, size_t total, const CellResult& cell);
+  // The same display for work that is not cells (`stats`: a program compiled, a driver
+  // read): `unit` names what is counted in the plain lines ("steps"), and on a terminal
+  // `item` (what was just done, "phong/pixel/hlsl") follows the counts.
+  void update(size_t done, size_t total, std::string_view unit, std::string_view item);
 
  private:
+  void draw(size_t done, size_t total, std::string_view unit, std::string_view item);
   using Clock = std::chrono::steady_clock;
   std::FILE* out_;
   bool terminal_, quiet_;

@@ -54,7 +54,8 @@ struct PendingNir {
 
 // Each reading is a child process that mostly waits on LLVM: run as many at once as
 // there are cores. A backend whose method gives nothing leaves its note, not zeros.
-void read_driver_counts(const std::vector<PendingNir>& programs, StatsReport& report) {
+void read_driver_counts(const std::vector<PendingNir>& programs, StatsReport& report,
+                        const std::function<void(const std::string&)>& step_done) {
   struct Job {
     const PendingNir* pending;
     NirBackend backend;
@@ -71,6 +72,8 @@ void read_driver_counts(const std::vector<PendingNir>& programs, StatsReport& re
       }));
     for (size_t j = start; j < std::min(jobs.size(), start + width); ++j) {
       auto counts = running[j - start].get();
+      const StatsEntry& first = report.entries[jobs[j].pending->first];
+      step_done(fmt::format("{}/{}/{} NIR {}", first.case_name, first.variant, first.language, to_string(jobs[j].backend)));
       for (Stage stage : {Stage::vertex, Stage::fragment}) {
         StatsEntry& e = report.entries[jobs[j].pending->first + (stage == Stage::fragment ? 1 : 0)];
         if (!e.nir) e.nir = NirStats{};
@@ -99,41 +102,62 @@ Result<StatsReport> collect_stats(const StatsOptions& o) {
   const CompilerVersions v = compiler_versions();
   report.tool = {{"glslang", v.glslang}, {"spirv_tools", v.spirv_tools}, {"spirv_cross", v.spirv_cross},
                  {"spirv_grammar", grammar_version()}};
-  std::vector<std::string> variant_names;
-  std::vector<PendingNir> programs;
+  // The programs first, so progress can say how many steps there are.
+  struct Program {
+    const Case* c;
+    const Variant* variant;
+    Language language;
+  };
+  std::vector<Case> loaded;
   for (const std::string& f : *files) {
     if (!wanted(o.cases, fs::path(f).stem().string())) continue;
     auto c = load_case(f);
     if (!c) return std::unexpected(c.error());
-    for (const Variant& variant : c->variants) {
+    loaded.push_back(std::move(*c));
+  }
+  std::vector<std::string> variant_names;
+  std::vector<Program> selected;
+  for (const Case& c : loaded)
+    for (const Variant& variant : c.variants) {
       if (std::find(variant_names.begin(), variant_names.end(), variant.name) == variant_names.end())
         variant_names.push_back(variant.name);
       if (!wanted(o.variants, variant.name)) continue;
-      for (Language language : {Language::hlsl, Language::cg, Language::glsl}) {
-        if (!wanted(o.languages, to_string(language)) || !variant.shaders.contains(language)) continue;
-        auto source = load_case_program(language, variant.shaders.at(language), c->path);
-        Result<CompiledProgram> program = source ? compile_program(*source) : std::unexpected(source.error());
-        for (Stage stage : {Stage::vertex, Stage::fragment}) {
-          StatsEntry e;
-          if (program) {
-            auto s = stage_stats(*program, stage);
-            if (s) e = std::move(*s);
-            else e.error = s.error().to_string();
-          } else {
-            e.error = program.error().to_string();
-          }
-          e.case_name = c->name;
-          e.variant = variant.name;
-          e.language = to_string(language);
-          e.stage = to_string(stage);
-          e.book = book_count(e.case_name, e.variant, e.stage);
-          report.entries.push_back(std::move(e));
-        }
-        if (program && o.nir) programs.push_back({report.entries.size() - 2, std::move(*program)});
-      }
+      for (Language language : {Language::hlsl, Language::cg, Language::glsl})
+        if (wanted(o.languages, to_string(language)) && variant.shaders.contains(language))
+          selected.push_back({&c, &variant, language});
     }
+  const size_t steps = selected.size() * (o.nir ? 3 : 1);   // a compile, then a NIR read per backend
+  size_t done = 0;
+  auto step_done = [&](const std::string& what) {
+    if (o.on_step) o.on_step(++done, steps, what);
+  };
+
+  std::vector<PendingNir> programs;
+  for (const auto& [c, variant_ptr, language] : selected) {
+    const Variant& variant = *variant_ptr;
+    auto source = load_case_program(language, variant.shaders.at(language), c->path);
+    Result<CompiledProgram> program = source ? compile_program(*source) : std::unexpected(source.error());
+    for (Stage stage : {Stage::vertex, Stage::fragment}) {
+      StatsEntry e;
+      if (program) {
+        auto s = stage_stats(*program, stage);
+        if (s) e = std::move(*s);
+        else e.error = s.error().to_string();
+      } else {
+        e.error = program.error().to_string();
+      }
+      e.case_name = c->name;
+      e.variant = variant.name;
+      e.language = to_string(language);
+      e.stage = to_string(stage);
+      e.book = book_count(e.case_name, e.variant, e.stage);
+      report.entries.push_back(std::move(e));
+    }
+    if (program && o.nir) programs.push_back({report.entries.size() - 2, std::move(*program)});
+    if (!program && o.nir) done += 2;   // nothing for the driver to read: its two steps are done
+    step_done(fmt::format("{}/{}/{}", c->name, variant.name, to_string(language)));
   }
-  read_driver_counts(programs, report);
+  read_driver_counts(programs, report, step_done);
   if (auto ok = check_names(o.variants, variant_names, "variant"); !ok) return std::unexpected(ok.error());
   return report;
 }

@@ -155,80 +155,178 @@ std::string to_csv(const StatsReport& report) {
   return out;
 }
 
-std::string format_table(const StatsReport& report) {
-  // Languages present, in a fixed order; rows keyed by case/variant/stage in entry order.
-  std::vector<std::string> languages;
+namespace {
+
+// Entries grouped by case/variant/stage in entry order, the languages present in a fixed order.
+struct TableRows {
+  std::vector<std::string> languages, rows;
+  std::map<std::string, std::map<std::string, const StatsEntry*>> by_row;
+};
+
+TableRows table_rows(const StatsReport& report) {
+  TableRows t;
   for (const char* l : {"hlsl", "cg", "glsl"})
     for (const StatsEntry& e : report.entries)
       if (e.language == l) {
-        languages.push_back(l);
+        t.languages.push_back(l);
         break;
       }
-  std::vector<std::string> rows;
-  std::map<std::string, std::map<std::string, const StatsEntry*>> by_row;
   for (const StatsEntry& e : report.entries) {
     std::string row = e.case_name + "/" + e.variant + "/" + e.stage;
-    if (!by_row.contains(row)) rows.push_back(row);
-    by_row[row][e.language] = &e;
+    if (!t.by_row.contains(row)) t.rows.push_back(row);
+    t.by_row[row][e.language] = &e;
   }
-  size_t w = 10;
-  for (const std::string& r : rows) w = std::max(w, r.size());
+  return t;
+}
 
-  // Per language: "tot  ar ex tx cf mem cv ot | -O tot ar | -Os tot | glsl"
-  const std::string block_head = "  tot  ar  ex  tx  cf mem  cv  ot   -O  ar  ex  -Os  gl  vk  gl";
-  constexpr int kBlock = 63;
-  auto nir_alu = [](const std::optional<NirCounts>& n) { return n ? std::to_string(n->alu) : std::string("-"); };
+std::string nir_alu(const StatsEntry& e, bool vulkan) {
+  if (!e.nir) return "-";
+  const std::optional<NirCounts>& n = vulkan ? e.nir->vulkan : e.nir->gl;
+  return n ? std::to_string(n->alu) : std::string("-");
+}
+
+std::string book_text(const StatsEntry& e) {
+  return e.book ? fmt::format("{} {}", *e.book, e.stage == "vertex" ? "vs_1_1" : "ps_2_0") : std::string();
+}
+
+// `text` folded at spaces so no line is wider than `width`, continuation lines indented.
+std::string folded(const std::string& text, size_t width, const std::string& indent) {
+  std::string out, line;
+  size_t start = 0;
+  while (start < text.size()) {
+    size_t end = text.find(' ', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string word = text.substr(start, end - start);
+    if (!line.empty() && line.size() + 1 + word.size() > width) {
+      out += line + "\n";
+      line = indent;
+    }
+    line += (line.empty() || line == indent ? "" : " ") + word;
+    start = end + 1;
+  }
+  return out + line + "\n";
+}
+
+std::string extended_calls(const StatsEntry& e) {
+  std::string calls;
+  for (const auto& [name, n] : e.spirv_opt.extended_calls)
+    calls += fmt::format("{}{}{}", calls.empty() ? "" : " ", name, n > 1 ? fmt::format("x{}", n) : "");
+  return calls;
+}
+
+const char* const kBookLegend =
+    "book: the book's fxc count in DX9 vs_1_1/ps_2_0 instruction slots, a different instruction set (for orientation, "
+    "not comparable one to one).";
+
+std::string compact_table(const TableRows& t) {
+  // The row name is cut (its end kept: the stage and variant tell rows apart) rather than
+  // letting a long case name push the table past kCompactTableWidth.
+  constexpr size_t kCounts = 72;   // everything right of the name: see `head`
+  const size_t limit = kCompactTableWidth - kCounts;
+  size_t w = std::string("case/variant/stage").size();
+  for (const std::string& r : t.rows) w = std::max(w, std::min(r.size(), limit));
+  auto name = [&](const std::string& r) { return r.size() <= w ? r : "~" + r.substr(r.size() - (w - 1)); };
+  std::string out = fmt::format("{:<{}} {:<4} {:>5}{:>4}{:>4}{:>4}{:>4} {:>5}{:>5} {:>5} {:>6} {:>6}  {}\n",
+                                "case/variant/stage", w, "lang", "spirv", "ar", "ex", "tx", "cf", "-O", "-Os", "glsl",
+                                "nir vk", "nir gl", "book");
+  std::string last_case;
+  for (const std::string& r : t.rows) {
+    const auto& cells = t.by_row.at(r);
+    const StatsEntry* any = cells.begin()->second;
+    if (!last_case.empty() && any->case_name != last_case) out += "\n";
+    last_case = any->case_name;
+    bool first = true, book_shown = false;   // the book's count once per row group, on a counted line
+    for (const std::string& l : t.languages) {
+      auto it = cells.find(l);
+      if (it == cells.end()) continue;
+      const StatsEntry& e = *it->second;
+      const std::string label = first ? name(r) : "";
+      if (!e.error.empty()) {
+        out += fmt::format("{:<{}} {:<4} compile error\n", label, w, l);
+      } else {
+        const ClassCounts& c = e.spirv;
+        out += fmt::format("{:<{}} {:<4} {:>5}{:>4}{:>4}{:>4}{:>4} {:>5}{:>5} {:>5} {:>6} {:>6}  {}", label, w, l, c.total,
+                           c.arithmetic, c.extended, c.texture, c.control, e.spirv_opt.total, e.spirv_os.total,
+                           e.glsl_lines, nir_alu(e, true), nir_alu(e, false), book_shown ? "" : book_text(e));
+        book_shown = true;
+        while (out.back() == ' ') out.pop_back();
+        out += "\n";
+      }
+      first = false;
+    }
+  }
+  out += "\nGLSL.std.450 calls after -O:\n";
+  for (const std::string& r : t.rows)
+    for (const std::string& l : t.languages) {
+      auto it = t.by_row.at(r).find(l);
+      if (it == t.by_row.at(r).end() || it->second->spirv_opt.extended_calls.empty()) continue;
+      out += folded(fmt::format("{} {}: {}", r, l, extended_calls(*it->second)), kCompactTableWidth, "    ");
+    }
+  out += "\n" + folded("spirv = SPIR-V instructions in function bodies as compiled (Vulkan target), of which ar "
+                       "arithmetic, ex GLSL.std.450 calls, tx texture, cf control flow; -O / -Os: totals after spirv-opt; "
+                       "glsl: lines of SPIRV-Cross GLSL; nir vk / nir gl: NIR ALU instructions Mesa compiled on lavapipe / "
+                       "OSMesa (- when not read: see the JSON's nir.note). --wide shows every class count.",
+                       kCompactTableWidth, "");
+  return out + folded(kBookLegend, kCompactTableWidth, "");
+}
+
+std::string wide_table(const TableRows& t) {
+  size_t w = 10;
+  for (const std::string& r : t.rows) w = std::max(w, r.size());
+  const std::string block_head = "  tot  ar  ex  tx  cf mem  cv  ot   -O  ar  ex  -Os glsl nir vk nir gl";
+  constexpr int kBlock = 70;
   auto block = [&](const StatsEntry* e) -> std::string {
     if (!e) return fmt::format("{:>{}}", "-", kBlock);
     if (!e->error.empty()) return fmt::format("{:>{}}", "compile error", kBlock);
     const ClassCounts& c = e->spirv;
-    return fmt::format("{:>5}{:>4}{:>4}{:>4}{:>4}{:>4}{:>4}{:>4}{:>5}{:>4}{:>4}{:>5}{:>4}{:>4}{:>4}", c.total,
+    return fmt::format("{:>5}{:>4}{:>4}{:>4}{:>4}{:>4}{:>4}{:>4}{:>5}{:>4}{:>4}{:>5}{:>5}{:>7}{:>7}", c.total,
                        c.arithmetic, c.extended, c.texture, c.control, c.memory, c.conversion, c.other,
                        e->spirv_opt.total, e->spirv_opt.arithmetic, e->spirv_opt.extended, e->spirv_os.total,
-                       e->glsl_lines, e->nir ? nir_alu(e->nir->vulkan) : "-", e->nir ? nir_alu(e->nir->gl) : "-");
+                       e->glsl_lines, nir_alu(*e, true), nir_alu(*e, false));
   };
   std::string out;
   out += fmt::format("{:<{}}", "", w);
-  for (const std::string& l : languages) out += fmt::format(" |{:^{}}", l, kBlock);
+  for (const std::string& l : t.languages) out += fmt::format(" |{:^{}}", l, kBlock);
   out += " | book\n";
   out += fmt::format("{:<{}}", "case/variant/stage", w);
-  for (size_t i = 0; i < languages.size(); ++i) out += " |" + block_head;
+  for (size_t i = 0; i < t.languages.size(); ++i) out += " |" + block_head;
   out += " | DX9\n";
   std::string last_case;
-  for (const std::string& r : rows) {
-    const auto& cells = by_row[r];
+  for (const std::string& r : t.rows) {
+    const auto& cells = t.by_row.at(r);
     const StatsEntry* any = cells.begin()->second;
     if (!last_case.empty() && any->case_name != last_case) out += "\n";
     last_case = any->case_name;
     out += fmt::format("{:<{}}", r, w);
-    for (const std::string& l : languages) {
+    for (const std::string& l : t.languages) {
       auto it = cells.find(l);
       out += " |" + block(it == cells.end() ? nullptr : it->second);
     }
-    std::string book;
-    if (any->book) book = fmt::format("{} {}", *any->book, any->stage == "vertex" ? "vs_1_1" : "ps_2_0");
-    out += " | " + book + "\n";
+    out += " | " + book_text(*any) + "\n";
   }
   // The GLSL.std.450 calls after -O, per shader, where the languages differ is easy to spot.
   out += "\nGLSL.std.450 calls after -O (per language):\n";
-  for (const std::string& r : rows) {
+  for (const std::string& r : t.rows) {
     std::string line;
-    for (const std::string& l : languages) {
-      auto it = by_row[r].find(l);
-      if (it == by_row[r].end() || it->second->spirv_opt.extended_calls.empty()) continue;
-      std::string calls;
-      for (const auto& [name, n] : it->second->spirv_opt.extended_calls)
-        calls += fmt::format("{}{}{}", calls.empty() ? "" : " ", name, n > 1 ? fmt::format("x{}", n) : "");
-      line += fmt::format("  {}: {}", l, calls);
+    for (const std::string& l : t.languages) {
+      auto it = t.by_row.at(r).find(l);
+      if (it == t.by_row.at(r).end() || it->second->spirv_opt.extended_calls.empty()) continue;
+      line += fmt::format("  {}: {}", l, extended_calls(*it->second));
     }
     if (!line.empty()) out += fmt::format("{:<{}}{}\n", r, w, line);
   }
   out += "\ntot = SPIR-V instructions in function bodies as compiled (Vulkan target); ar arithmetic, ex GLSL.std.450 "
          "calls, tx texture, cf control flow, mem memory, cv conversion, ot other; -O / -Os: totals after spirv-opt; "
-         "gl: lines of SPIRV-Cross GLSL; vk / gl: NIR ALU instructions Mesa compiled on lavapipe / OSMesa (- when "
-         "not read: see the JSON's nir.note).\nbook: the book's fxc count in DX9 vs_1_1/ps_2_0 instruction slots, a "
-         "different instruction set (for orientation, not comparable one to one).\n";
-  return out;
+         "glsl: lines of SPIRV-Cross GLSL; nir vk / nir gl: NIR ALU instructions Mesa compiled on lavapipe / OSMesa "
+         "(- when not read: see the JSON's nir.note).\n";
+  return out + kBookLegend + "\n";
+}
+
+}  // namespace
+
+std::string format_table(const StatsReport& report, TableForm form) {
+  const TableRows t = table_rows(report);
+  return form == TableForm::wide ? wide_table(t) : compact_table(t);
 }
 
 }  // namespace shaderbed::stats

@@ -52,9 +52,17 @@ Result<void> write_text_file(const std::string& path, const std::string& text);
 
 std::string to_csv(const StatsReport&);
 
-// Aligned table: one row per case/variant/stage, one column block per language (total,
-// arithmetic, extended, texture, control, after -O and -Os), then the book's count.
-std::string format_table(const StatsReport&);
+enum class TableForm {
+  compact,   // fits 120 columns: one row per case/variant/stage/language, the main counts
+  wide,      // every class count, one column block per language side by side (~230 columns)
+};
+// Aligned table of the counts with a legend, then the GLSL.std.450 calls after -O.
+// compact: SPIR-V total and its arithmetic/extended/texture/control parts, the totals after
+// -O and -Os, the SPIRV-Cross GLSL lines, the NIR ALU counts on lavapipe and OSMesa and the
+// book's count; wide: also memory/conversion/other and the -O class counts.
+std::string format_table(const StatsReport&, TableForm form = TableForm::compact);
+// The compact table's promise: no line of it is wider than this.
+constexpr size_t kCompactTableWidth = 120;
 
 // The book's quoted instruction count for a case/variant/stage, if it gives one
 // (its §3.26). Not the same instruction set: for orientation.

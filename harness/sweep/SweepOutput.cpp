@@ -137,11 +137,13 @@ Result<std::vector<SceneChart>> write_sweep_charts(const SweepResult& sweep, con
   for (size_t i = 0; i < scenes.size(); ++i) {
     std::vector<ChartPoint> points;
     for (const SweepPoint& p : sweep.points)
-      if (p.status != CellStatus::error && p.scene == scenes[i]) points.push_back({p.label, p.series, p.time_ms, p.rmse});
+      if (p.status != CellStatus::error && p.scene == scenes[i])
+        points.push_back({p.label, p.series, p.time_ms, p.rmse, p.time_low_ms, p.time_high_ms});
     const std::string scene = scenes[i].empty() ? "" : ", " + scenes[i];
     const ChartSpec spec{.title = fmt::format("{}{}: speed against error ({}, {}x{})", sweep.case_name, scene, cells,
                                               sweep.size, sweep.size),
-                         .x_label = fmt::format("draw time, wall median of {} runs (ms)", sweep.timing.runs),
+                         .x_label = fmt::format("draw time, wall median of {} runs (ms); bars: its confidence interval",
+                                                sweep.timing.runs),
                          .y_label = is_sh_sweep(sweep) ? "interior RMSE against the exact lighting integral"
                                                        : "interior RMSE against the per-pixel model in double"};
     const std::string stem = scenes.size() == 1 ? out_stem : fmt::format("{}-{}", out_stem, i + 1);

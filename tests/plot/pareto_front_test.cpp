@@ -87,5 +87,33 @@ TEST(ParetoFront, EveryExcludedFinitePointIsDominatedByAFrontPoint) {
   for (std::size_t k = 1; k < f.front.size(); ++k) EXPECT_LE(points[f.front[k - 1]].cost, points[f.front[k]].cost);
 }
 
+// Speeds are medians with confidence intervals: what lies within noise is not ordered.
+CostError measured(double cost, double low, double high, double error) { return {cost, error, low, high}; }
+
+TEST(ParetoFront, PointsWhoseCostIntervalsOverlapAreBothOnTheFront) {
+  // 1 has the higher median and the higher error, but its interval overlaps 0's: within
+  // noise it may be the faster, so 0 does not dominate it.
+  const std::vector<CostError> points = {measured(1.0, 0.9, 1.2, 0.1), measured(1.1, 1.0, 1.3, 0.2)};
+  EXPECT_EQ(front_of(points).front, (Indices{0, 1}));
+  EXPECT_FALSE(dominates(points[0], points[1]));
+  EXPECT_FALSE(dominates(points[1], points[0]));
+}
+
+TEST(ParetoFront, ADisjointFasterIntervalWithNoWorseErrorDominates) {
+  const std::vector<CostError> points = {measured(1.0, 0.9, 1.1, 0.1), measured(2.0, 1.8, 2.2, 0.1),
+                                         measured(2.1, 1.95, 2.3, 0.3), measured(3.0, 2.9, 3.1, 0.05)};
+  // 1 is beaten by 0 (wholly faster, same error); 2 by 0 and, within noise of 1, only by 0.
+  EXPECT_EQ(front_of(points).front, (Indices{0, 3}));
+  EXPECT_TRUE(dominates(points[0], points[1]));
+  EXPECT_FALSE(dominates(points[1], points[2]));   // overlapping: 1.8..2.2 against 1.95..2.3
+}
+
+TEST(ParetoFront, ANonFiniteIntervalBoundKeepsThePointOffTheFront) {
+  const std::vector<CostError> points = {measured(1.0, 0.9, kInf, 0.1), {2.0, 0.2}};
+  const ParetoFront f = front_of(points);
+  EXPECT_EQ(f.front, (Indices{1}));
+  EXPECT_EQ(f.non_finite, (Indices{0}));
+}
+
 }  // namespace
 }  // namespace shaderbed

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <optional>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -169,6 +170,54 @@ TEST(SpeedErrorChart, WritesAPngAndAnInlinableSvgWithTitleLabelsAndTheFront) {
   circles.pop_back();  // the key sample comes last
   std::ranges::sort(circles, {}, &Marker::x);
   for (std::size_t k = 1; k < circles.size(); ++k) EXPECT_GT(circles[k].y, circles[k - 1].y) << "front step " << k;
+}
+
+// Horizontal segments (M x y L x2 y) in `svg_part`: where an error bar is drawn.
+struct Segment {
+  double x0, x1, y;
+};
+std::vector<Segment> horizontal_segments(const std::string& svg_part) {
+  std::vector<Segment> found;
+  static const std::regex seg(R"(M([-0-9.]+),([-0-9.]+) L([-0-9.]+),([-0-9.]+))");
+  for (auto it = std::sregex_iterator(svg_part.begin(), svg_part.end(), seg); it != std::sregex_iterator(); ++it) {
+    const double x0 = std::stod((*it)[1]), y0 = std::stod((*it)[2]), x1 = std::stod((*it)[3]), y1 = std::stod((*it)[4]);
+    if (std::abs(y0 - y1) < 0.01 && std::abs(x1 - x0) > 0.5) found.push_back({std::min(x0, x1), std::max(x0, x1), y0});
+  }
+  return found;
+}
+
+TEST(SpeedErrorChart, DrawsEachMedianCostsConfidenceIntervalAsAnErrorBar) {
+  const fs::path dir = output_dir();
+  // Known intervals on a linear axis: 'a' +-0.1 around 1, 'b' from 1.5 to 3 around 2.
+  std::vector<ChartPoint> points = {{"a", "timed", 1.0, 0.2}, {"b", "timed", 2.0, 0.1}};
+  points[0].cost_low = 0.9, points[0].cost_high = 1.1;
+  points[1].cost_low = 1.5, points[1].cost_high = 3.0;
+  auto files = write_speed_error_chart(points, {.title = "bars", .x_scale = AxisScale::linear, .y_scale = AxisScale::linear},
+                                       (dir / "bars").string());
+  ASSERT_TRUE(files) << files.error().to_string();
+  const std::string svg = read_all(files->svg);
+  const std::string series = plot_group(svg, "timed");
+  ASSERT_FALSE(series.empty());
+  std::vector<Marker> dots = markers(series);
+  ASSERT_EQ(dots.size(), 3u);
+  dots.pop_back();   // the key's sample comes last
+  std::ranges::sort(dots, {}, &Marker::x);
+  const Marker a = dots[0], b = dots[1];
+  const double px_per_ms = b.x - a.x;        // the medians are 1 ms apart
+  auto bar_at = [&](const Marker& m) -> std::optional<Segment> {
+    for (const Segment& s : horizontal_segments(series))
+      if (std::abs(s.y - m.y) < 1.0 && s.x0 <= m.x && s.x1 >= m.x) return s;
+    return std::nullopt;
+  };
+  const auto bar_a = bar_at(a), bar_b = bar_at(b);
+  ASSERT_TRUE(bar_a) << "no error bar through a";
+  ASSERT_TRUE(bar_b) << "no error bar through b";
+  EXPECT_NEAR(bar_a->x0, a.x - 0.1 * px_per_ms, 1.5);
+  EXPECT_NEAR(bar_a->x1, a.x + 0.1 * px_per_ms, 1.5);
+  EXPECT_NEAR(bar_b->x0, b.x - 0.5 * px_per_ms, 1.5);
+  EXPECT_NEAR(bar_b->x1, b.x + 1.0 * px_per_ms, 1.5);
+  // a is faster beyond noise, b more accurate: both are on the front.
+  EXPECT_EQ(markers(plot_group(svg, "Pareto front")).size(), 3u);   // two points and the key's sample
 }
 
 TEST(SpeedErrorChart, ChoosesALogAxisForCostsSpanningDecades) {

@@ -6,11 +6,14 @@
 #include <chrono>
 #include <memory>
 
+#include <unistd.h>
+
 #include <fmt/format.h>
 
 #include "cli/commands/Command.h"
 #include "compile/IsolatedCompile.h"
 #include "core/WritablePath.h"
+#include "report/ConsoleProgress.h"
 #include "run/Runner.h"
 #include "stats/Baseline.h"
 #include "stats/Collect.h"
@@ -22,7 +25,7 @@ struct StatsArguments {
   stats::StatsOptions options;
   std::string json, csv, baseline, from, metric = "spirv_opt";
   double fail_above = -1;
-  bool quiet = false;
+  bool quiet = false, wide = false;
 };
 
 }  // namespace
@@ -48,6 +51,7 @@ Command add_stats_command(CLI::App& app) {
   cmd->add_option("--fail-above", args->fail_above,
                   "With --baseline: exit 1 when the affected shaders' total grows by more than PCT percent");
   cmd->add_flag("--quiet", args->quiet, "Do not print the table");
+  cmd->add_flag("--wide", args->wide, "Print every class count, languages side by side (about 230 columns)");
   cmd->add_flag("!--no-nir", args->options.nir,
                 "Skip the driver (Mesa NIR) counts, which run one child process per program and backend");
 
@@ -73,6 +77,11 @@ Command add_stats_command(CLI::App& app) {
             } else {
               if (args->options.cases_dir.empty()) args->options.cases_dir = default_cases_dir();
               isolate_compiles();   // a shader glslang crashes on is an error row; the others are counted
+              // Progress on stderr (the library takes seconds); stdout keeps only the table.
+              ConsoleProgress progress(stderr, isatty(STDERR_FILENO), args->quiet);
+              args->options.on_step = [&progress](size_t done, size_t total, const std::string& what) {
+                progress.update(done, total, "steps", what);
+              };
               report = stats::collect_stats(args->options);
             }
             if (!report) {
@@ -81,7 +90,7 @@ Command add_stats_command(CLI::App& app) {
             }
             const double seconds =
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            if (!args->quiet) fmt::print("{}", stats::format_table(*report));
+            if (!args->quiet) fmt::print("{}", stats::format_table(*report, args->wide ? stats::TableForm::wide : stats::TableForm::compact));
             int errors = 0;
             for (const auto& e : report->entries)
               if (!e.error.empty()) {
