@@ -9,6 +9,7 @@
 
 #include "report/CellExplanation.h"
 #include "report/CellGroups.h"
+#include "report/ConsoleColour.h"
 #include "report/ConsoleWrap.h"
 #include "report/FirstLine.h"
 #include "report/TwinText.h"
@@ -97,16 +98,16 @@ EntryText known_text(const CellResult& r) {
 
 }  // namespace
 
-bool print_problems(const RunReport& report, std::FILE* out, bool blank_line_first) {
+bool print_problems(const RunReport& report, std::FILE* out, bool blank_line_first, bool colour) {
   bool printed = false;
   // Cells whose entry reads the same but for their own identity are printed once, with
   // the cells it stands for (report/CellGroups.h).
-  auto section = [&](const char* title, auto&& wanted, auto&& text_of, bool images) {
+  auto section = [&](const char* title, Tint tint, auto&& wanted, auto&& text_of, bool images) {
     std::vector<const CellResult*> cells;
     for (const CellResult& r : report.results)
       if (wanted(r)) cells.push_back(&r);
     if (cells.empty()) return;
-    fmt::print(out, "{}{}:\n", printed || blank_line_first ? "\n" : "", title);
+    fmt::print(out, "{}{}:\n", printed || blank_line_first ? "\n" : "", tinted(title, tint, colour));
     printed = true;
     const auto key_of = [&](const CellResult& r) {
       const EntryText t = text_of(r);
@@ -118,28 +119,31 @@ bool print_problems(const RunReport& report, std::FILE* out, bool blank_line_fir
   };
   const auto message_only = [](const CellResult& r) { return EntryText{r.message, {}}; };
   const auto reason_only = [](const CellResult& r) { return EntryText{r.known_reason, {}}; };
-  section("failures", [](const CellResult& r) { return r.status == CellStatus::fail && !r.known_failure; },
+  section("failures", Tint::fail, [](const CellResult& r) { return r.status == CellStatus::fail && !r.known_failure; },
           failure_text, true);
-  section("errors", [](const CellResult& r) { return r.status == CellStatus::error; }, message_only, false);
-  section("known", [](const CellResult& r) { return r.status == CellStatus::fail && r.known_failure; }, known_text,
+  section("errors", Tint::warn, [](const CellResult& r) { return r.status == CellStatus::error; }, message_only, false);
+  section("known", Tint::warn, [](const CellResult& r) { return r.status == CellStatus::fail && r.known_failure; }, known_text,
           false);
-  section("skipped (the path does not apply to the shader)",
+  section("skipped (the path does not apply to the shader)", Tint::none,
           [](const CellResult& r) { return r.status == CellStatus::skipped; }, message_only, false);
-  section("known failures that passed (remove them from the expectations)",
+  section("known failures that passed (remove them from the expectations)", Tint::warn,
           [](const CellResult& r) { return r.status == CellStatus::pass && r.known_failure; }, reason_only, false);
   print_warnings(report, out, printed || blank_line_first) && (printed = true);
   return printed;
 }
 
-void print_totals(const RunReport& report, std::FILE* out) {
+void print_totals(const RunReport& report, std::FILE* out, bool colour) {
   const size_t known = known_failures(report);
   const size_t skipped = report.count(CellStatus::skipped);
   if (report.interruption)
     fmt::print(out, "INCOMPLETE: {}; the cells below are those it finished\n", report.interruption->reason);
-  fmt::print(out, "{}{} cells: {} passed, {} failed, {} known, {} errors{} in {:.1f} s\n",
-             report.interruption ? "INCOMPLETE: " : report.acceptable() ? "" : "FAIL: ", report.results.size(), report.count(CellStatus::pass),
-             report.count(CellStatus::fail) - known, known, report.count(CellStatus::error),
-             skipped ? fmt::format(", {} skipped", skipped) : "", report.wall_ms / 1000.0);
+  const std::string totals = fmt::format(
+      "{}{} cells: {} passed, {} failed, {} known, {} errors{} in {:.1f} s",
+      report.interruption ? "INCOMPLETE: " : report.acceptable() ? "" : "FAIL: ", report.results.size(),
+      report.count(CellStatus::pass), report.count(CellStatus::fail) - known, known, report.count(CellStatus::error),
+      skipped ? fmt::format(", {} skipped", skipped) : "", report.wall_ms / 1000.0);
+  const Tint verdict = report.interruption ? Tint::warn : report.acceptable() ? Tint::pass : Tint::fail;
+  fmt::print(out, "{}\n", tinted(totals, verdict, colour));
 }
 
 }  // namespace shaderbed

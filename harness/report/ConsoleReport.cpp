@@ -12,10 +12,10 @@ void print_console_report(const RunReport& report, std::FILE* out, const Console
   ConsoleView view = options.view;
   if (view == ConsoleView::summary && options.timing) view = ConsoleView::table;
   if (view == ConsoleView::table) print_table(report, out, {.timing = options.timing});
-  if (view == ConsoleView::summary) print_summary(report, out);
-  const bool problems = print_problems(report, out, view != ConsoleView::quiet);
+  if (view == ConsoleView::summary) print_summary(report, out, options.colour);
+  const bool problems = print_problems(report, out, view != ConsoleView::quiet, options.colour);
   if (view != ConsoleView::quiet || problems) std::fputc('\n', out);
-  print_totals(report, out);
+  print_totals(report, out, options.colour);
 }
 
 }  // namespace shaderbed

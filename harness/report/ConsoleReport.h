@@ -16,6 +16,7 @@ enum class ConsoleView {
 struct ConsoleOptions {
   ConsoleView view = ConsoleView::summary;
   bool timing = false;   // per-cell draw times; they live in the table, so they select it over the summary
+  bool colour = false;   // ANSI colour on the verdicts (report/ConsoleColour.h)
 };
 
 void print_console_report(const RunReport& report, std::FILE* out, const ConsoleOptions& options = {});

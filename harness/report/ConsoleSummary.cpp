@@ -6,18 +6,20 @@
 
 #include <fmt/format.h>
 
+#include "report/ConsoleColour.h"
 #include "report/Markup.h"
 #include "report/SummaryMatrix.h"
 
 namespace shaderbed {
 
-void print_summary(const RunReport& report, std::FILE* out) {
+void print_summary(const RunReport& report, std::FILE* out, bool colour) {
   const SummaryMatrix m = build_summary_matrix(report);
   if (m.rows.empty()) return;
   // Text grid: 3 header lines, then one line per row; columns: case, variant, the matrix
   // columns, worst error, worst share of the threshold.
   const size_t columns = m.columns.size() + 4;
   std::vector<std::vector<std::string>> lines(3, std::vector<std::string>(columns));
+  std::vector<std::vector<Tint>> tints(3, std::vector<Tint>(columns, Tint::none));
   lines[2][0] = "case";
   lines[2][1] = "variant";
   std::vector<bool> group_start(columns, false);   // a language's first column: wider gap before it
@@ -37,21 +39,31 @@ void print_summary(const RunReport& report, std::FILE* out) {
   for (size_t r = 0; r < m.rows.size(); ++r) {
     const MatrixRow& row = m.rows[r];
     std::vector<std::string> line(columns);
+    std::vector<Tint> tint(columns, Tint::none);
     // The case once per block of its variants, so the eye finds it.
     if (r == 0 || m.rows[r - 1].case_name != row.case_name) line[0] = row.case_name;
     line[1] = row.variant;
-    for (size_t c = 0; c < row.cells.size(); ++c) line[c + 2] = row.cells[c].empty() ? "-" : row.cells[c].text();
+    for (size_t c = 0; c < row.cells.size(); ++c) {
+      const MatrixCell& cell = row.cells[c];
+      line[c + 2] = cell.empty() ? "-" : cell.text();
+      if (!cell.empty() && cell.skipped != cell.total)
+        tint[c + 2] = cell.failed + cell.errors ? Tint::fail : cell.known ? Tint::warn : Tint::pass;
+    }
     line[columns - 2] = row.measured ? markup::sci(row.worst_max_abs) : "-";
     line[columns - 1] = row.measured ? percent_of_threshold(row.worst_of_threshold) : "-";
     lines.push_back(std::move(line));
+    tints.push_back(std::move(tint));
   }
   std::vector<size_t> width(columns, 0);
   for (const auto& line : lines)
     for (size_t c = 0; c < columns; ++c) width[c] = std::max(width[c], line[c].size());
-  for (const auto& line : lines) {
+  for (size_t l = 0; l < lines.size(); ++l) {
+    const auto& line = lines[l];
     std::string text;
+    // Padded first, tinted after: the escape codes take no room on the screen.
     for (size_t c = 0; c < columns; ++c)
-      text += fmt::format("{}{:<{}}", c == 0 ? "" : group_start[c] ? "   " : "  ", line[c], width[c]);
+      text += fmt::format("{}{}", c == 0 ? "" : group_start[c] ? "   " : "  ",
+                          tinted(fmt::format("{:<{}}", line[c], width[c]), tints[l][c], colour));
     while (!text.empty() && text.back() == ' ') text.pop_back();
     fmt::print(out, "{}\n", text);
   }

@@ -10,6 +10,7 @@ namespace shaderbed {
 // each "passed/total" with "!" for new failures or errors and "*" for known ones, then the
 // row's worst interior error and its largest share of a threshold, and a legend. It fits a
 // screen where the per-cell table (ConsoleTable) is 1400 rows long.
-void print_summary(const RunReport& report, std::FILE* out);
+// `colour`: the verdicts tinted (report/ConsoleColour.h).
+void print_summary(const RunReport& report, std::FILE* out, bool colour = false);
 
 }  // namespace shaderbed

@@ -75,7 +75,8 @@ std::vector<CellGroup> plan_cells(const std::vector<Case>& cases, std::vector<Ba
           for (BackendSlot& b : backends) {
             // A twin started only to draw a case's reference draws no cells unless a filter asks.
             if (!wanted(f.backends, b.name) || (f.backends.empty() && twin_backend_precision(b.name))) continue;
-            for (ShaderPath p : backend_paths(b.name, language)) group.cells.push_back({language, &b, p});
+            for (ShaderPath p : backend_paths(b.name, language))
+              if (wanted(f.paths, to_string(p))) group.cells.push_back({language, &b, p});
           }
         }
         if (!group.cells.empty()) groups.push_back(std::move(group));

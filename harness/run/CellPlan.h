@@ -42,7 +42,7 @@ struct CellGroup {
 };
 
 struct CellFilters {
-  std::vector<std::string> variants, languages, shapes, backends;
+  std::vector<std::string> variants, languages, shapes, backends, paths;
 };
 
 // The backends a run starts: the filter's (empty = vulkan, gl), plus the backend of every

@@ -20,6 +20,7 @@ struct SuiteSelection {
   std::vector<std::string> cases;
   std::vector<std::string> variants;     // vertex, pixel, ...
   std::vector<std::string> backends;     // vulkan, gl
+  std::vector<std::string> paths;        // spirv, glsl, cross (backends/Backend.h)
   std::vector<std::string> languages;    // every language a case has
   std::vector<std::string> shapes;       // sphere, cube, cone, torus
   std::vector<std::string> params;       // "name=value[,value...]" overrides

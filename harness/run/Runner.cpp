@@ -119,6 +119,7 @@ Result<std::vector<Case>> select_cases(const RunOptions& o) {
   if (auto ok = check_names(s.backends, {"vulkan", "gl", "twin-double", "twin-float", "twin-half"}, "backend"); !ok)
     return std::unexpected(ok.error());
   if (auto ok = check_names(s.languages, {"glsl", "hlsl", "cg"}, "language"); !ok) return std::unexpected(ok.error());
+  if (auto ok = check_names(s.paths, {"spirv", "glsl", "cross"}, "path"); !ok) return std::unexpected(ok.error());
   if (auto ok = check_names(s.shapes, shape_names(), "shape"); !ok) return std::unexpected(ok.error());
   const int size = o.cell.size;
   if (size < 8 || size > 4096) return fail(ErrorStage::options, fmt::format("--size {} is outside 8..4096", size));
@@ -230,7 +231,7 @@ Result<std::unique_ptr<SuitePlan>> plan_suite(const RunOptions& o) {
     if (wanted(plan->backend_names, name)) plan->backends.push_back({name});
   for (const std::string& name : plan->backend_names)
     if (twin_backend_precision(name)) plan->backends.push_back({name});
-  plan->groups = plan_cells(plan->cases, plan->backends, {s.variants, s.languages, s.shapes, s.backends});
+  plan->groups = plan_cells(plan->cases, plan->backends, {s.variants, s.languages, s.shapes, s.backends, s.paths});
   if (plan->groups.empty()) return fail(ErrorStage::options, "the filters select no cells");
   if (shard) plan->groups = select_shard(std::move(plan->groups), *shard);
   for (const CellGroup& g : plan->groups) plan->cells += g.cells.size();

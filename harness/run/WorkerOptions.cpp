@@ -12,7 +12,7 @@ using json = nlohmann::json;
 void to_json(json& j, const SuiteSelection& s) {
   j = {{"cases_dir", s.cases_dir}, {"cases", s.cases},         {"variants", s.variants},
        {"backends", s.backends},   {"languages", s.languages}, {"shapes", s.shapes},
-       {"params", s.params},       {"shard", s.shard}};
+       {"params", s.params},       {"shard", s.shard},         {"paths", s.paths}};
 }
 void from_json(const json& j, SuiteSelection& s) {
   j.at("cases_dir").get_to(s.cases_dir);
@@ -23,6 +23,7 @@ void from_json(const json& j, SuiteSelection& s) {
   j.at("shapes").get_to(s.shapes);
   j.at("params").get_to(s.params);
   j.at("shard").get_to(s.shard);
+  j.at("paths").get_to(s.paths);
 }
 
 void to_json(json& j, const CellSettings& c) {

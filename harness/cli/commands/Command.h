@@ -32,6 +32,8 @@ Command add_compile_stages_command(CLI::App& app);   // hidden: compile/Isolated
 Command add_view_command(CLI::App& app);
 Command add_view_compile_command(CLI::App& app);  // hidden: the viewer's compile probe (ViewCommand.cpp)
 Command add_sh_command(CLI::App& app);            // sh project|transfer|eval (ShCommand.cpp)
+Command add_help_command(CLI::App& app);          // help [COMMAND]: that command's --help
+Command add_completion_command(CLI::App& app);    // completion bash: a completion script
 
 // --cache-dir, --no-driver-cache, --no-compile-cache on the root app, accepted after any
 // subcommand too (CacheOptions.cpp). Call after adding the subcommands and before any

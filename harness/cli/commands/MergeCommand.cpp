@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "cli/commands/ColourChoice.h"
 #include "cli/commands/Command.h"
 #include "cli/commands/ReportOutputs.h"
 #include "run/Runner.h"
@@ -77,13 +78,14 @@ Command add_merge_command(CLI::App& app) {
                                             dropped.front()));
             }
             const RunCoverage coverage = run_coverage(merged);
-            if (args->console.view != ConsoleView::quiet) fmt::print("merged {} file{}: {} cells of {} case{}\n", args->inputs.size(), args->inputs.size() == 1 ? "" : "s",
+            if (args->console.view != ConsoleView::quiet) fmt::print(args->outputs.console(), "merged {} file{}: {} cells of {} case{}\n", args->inputs.size(), args->inputs.size() == 1 ? "" : "s",
                        merged.results.size(), coverage.cases, coverage.cases == 1 ? "" : "s");
             if (args->console.view != ConsoleView::quiet)
-              for (const std::string& line : coverage.lines) fmt::print("  {}\n", line);
+              for (const std::string& line : coverage.lines) fmt::print(args->outputs.console(), "  {}\n", line);
             if (!coverage.holes.empty())
-              fmt::print("  no cells for {}: was a job of the matrix left out?\n", fmt::join(coverage.holes, ", "));
-            print_console_report(merged, stdout, args->console);
+              fmt::print(args->outputs.console(), "  no cells for {}: was a job of the matrix left out?\n", fmt::join(coverage.holes, ", "));
+            args->console.colour = colour_on(args->outputs.console());
+            print_console_report(merged, args->outputs.console(), args->console);
             if (!args->outputs.write(merged, page ? &*page : nullptr, notes)) return kExitFail;
             return merged.acceptable() ? 0 : kExitFail;
           }};

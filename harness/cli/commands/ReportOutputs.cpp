@@ -1,5 +1,6 @@
 #include "cli/commands/ReportOutputs.h"
 
+#include <cstdio>
 #include <filesystem>
 #include <tuple>
 
@@ -34,7 +35,8 @@ void add_console_flags(CLI::App* cmd, ConsoleOptions& console) {
 
 
 void ReportOutputs::add_options(CLI::App* cmd) {
-  cmd->add_option("--json", json, "Write the results as JSON (schema 2) to this file");
+  cmd->add_option("--json", json, "Write the results as JSON (schema 2) to this file ('-': standard output, the console report then "
+                  "going to standard error)");
   cmd->add_option("--junit", junit, "Write JUnit XML (one testcase per cell) to this file");
   cmd->add_option("--html", html, "Write a self-contained HTML report (index.html) into this folder");
   cmd->add_option("--chart", charts,
@@ -64,7 +66,7 @@ bool ReportOutputs::load_charts() {
 }
 
 bool ReportOutputs::check_writable() const {
-  for (const auto& [path, what, folder] : {std::tuple{json, "--json", false}, std::tuple{junit, "--junit", false},
+  for (const auto& [path, what, folder] : {std::tuple{json_on_stdout() ? std::string() : json, "--json", false}, std::tuple{junit, "--junit", false},
                                            std::tuple{html, "--html", true}}) {
     if (path.empty()) continue;
     if (auto ok = folder ? check_writable_folder(path, what) : check_writable_file(path, what); !ok) {
@@ -77,7 +79,7 @@ bool ReportOutputs::check_writable() const {
 
 std::vector<std::pair<std::string, std::string>> ReportOutputs::files() const {
   std::vector<std::pair<std::string, std::string>> written;
-  if (!json.empty()) written.emplace_back(json, "--json");
+  if (!json.empty() && !json_on_stdout()) written.emplace_back(json, "--json");
   if (!junit.empty()) written.emplace_back(junit, "--junit");
   if (!html.empty()) written.emplace_back((std::filesystem::path(html) / "index.html").string(), "--html");
   return written;
@@ -94,16 +96,21 @@ bool ReportOutputs::check_not_inputs(const std::vector<std::string>& inputs) con
 
 bool ReportOutputs::write(const RunReport& report, const RunReport* html_view,
                           const std::vector<std::string>& html_notes) const {
-  auto done = [](const Result<void>& ok, const char* what, const std::string& path) {
+  auto done = [this](const Result<void>& ok, const char* what, const std::string& path) {
     if (!ok) {
       fmt::print(stderr, "shaderbed: {}\n", ok.error().to_string());
       return false;
     }
-    fmt::print("{}: {}\n", what, std::filesystem::absolute(path).string());
+    fmt::print(console(), "{}: {}\n", what, std::filesystem::absolute(path).string());
     return true;
   };
   bool ok = true;
-  if (!json.empty()) ok &= done(write_json(report, json), "results", json);
+  if (json_on_stdout()) {
+    const std::string text = to_json(report);
+    ok &= std::fwrite(text.data(), 1, text.size(), stdout) == text.size() && std::fflush(stdout) == 0;
+  } else if (!json.empty()) {
+    ok &= done(write_json(report, json), "results", json);
+  }
   if (!junit.empty()) ok &= done(write_junit(report, junit), "junit", junit);
   if (!html.empty()) {
     auto written = write_html(html_view ? *html_view : report, html, HtmlOptions{.charts = loaded_charts, .notes = html_notes});

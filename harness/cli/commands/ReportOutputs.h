@@ -21,6 +21,10 @@ struct ReportOutputs {
   std::vector<HtmlChart> loaded_charts;
 
   void add_options(CLI::App* cmd);
+  // --json -: the JSON is standard output, so everything else the command says (the console
+  // report, where files went) goes to standard error.
+  bool json_on_stdout() const { return json == "-"; }
+  std::FILE* console() const { return json_on_stdout() ? stderr : stdout; }
   // Reads the --chart files before any work is done; false (after printing why) when one is
   // not a self-contained SVG.
   bool load_charts();

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/commands/ColourChoice.h"
 #include "cli/commands/Command.h"
 #include "cli/commands/ReportOutputs.h"
 #include "core/SignalsHeld.h"
@@ -39,6 +40,10 @@ Command add_run_command(CLI::App& app) {
       ->delimiter(',');
   cmd->add_option("--variant", run.select.variants, "Variants: vertex, pixel, pixel_lut; default: all")->delimiter(',');
   cmd->add_option("--backend", run.select.backends, "Backends: vulkan, gl; default: both")->delimiter(',');
+  cmd->add_option("--path", run.select.paths,
+                  "Shader paths: spirv (glslang's SPIR-V), glsl (the GLSL source, GL only), cross (SPIRV-Cross's "
+                  "GLSL, GL only); default: every path a backend has")
+      ->delimiter(',');
   cmd->add_option("--lang", run.select.languages, "Languages: hlsl, glsl, cg; default: every language a case has")
       ->delimiter(',');
   cmd->add_option("--shape", run.select.shapes, "Shapes: sphere, cube, cone, torus; default: all")->delimiter(',');
@@ -146,18 +151,21 @@ Command add_run_command(CLI::App& app) {
             // A signal now waits until the reports are written: the run is over, and a stop
             // between them would keep some and lose others.
             const SignalsHeld held;
-            print_console_report(*report, stdout, args->console);
+            ConsoleOptions console = args->console;
+            std::FILE* const says = args->outputs.console();   // stderr with --json -
+            console.colour = colour_on(says);
+            print_console_report(*report, says, console);
             if (!args->outputs.write(*report)) return kExitFail;
             if (!options.cell.out_dir.empty())
-              fmt::print("images: {}/<case>/<variant>/<shape>/\n", std::filesystem::absolute(options.cell.out_dir).string());
+              fmt::print(says, "images: {}/<case>/<variant>/<shape>/\n", std::filesystem::absolute(options.cell.out_dir).string());
             if (!options.cell.save_images_dir.empty() && report->interruption)
-              fmt::print("stored images: none saved (the run was interrupted; {} is as it was)\n",
+              fmt::print(says, "stored images: none saved (the run was interrupted; {} is as it was)\n",
                          options.cell.save_images_dir);
             else if (!report->stored_images_lost.empty())
               fmt::print(stderr, "shaderbed: stored images: none saved ({}); {} is as it was\n",
                          report->stored_images_lost, options.cell.save_images_dir);
             else if (!options.cell.save_images_dir.empty())
-              fmt::print("stored images: {} (judge later runs with --against {})\n",
+              fmt::print(says, "stored images: {} (judge later runs with --against {})\n",
                          (std::filesystem::absolute(options.cell.save_images_dir) / "manifest.json").string(),
                          options.cell.save_images_dir);
             // Interrupted: the cells it had are written above, marked incomplete.
