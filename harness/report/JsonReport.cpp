@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -21,6 +22,16 @@ namespace {
 using ojson = nlohmann::ordered_json;
 using json = nlohmann::json;
 
+
+// A folder under $HOME as "~/..." (the default caches are there): a report names no
+// user's home, so it reads the same on every machine and says nothing about who ran it.
+std::string home_relative(const std::string& dir) {
+  const char* home = std::getenv("HOME");
+  if (!home || !*home || dir.empty()) return dir;
+  const std::filesystem::path relative = std::filesystem::path(dir).lexically_relative(home);
+  if (relative.empty() || *relative.begin() == "..") return dir;
+  return relative == "." ? "~" : "~/" + relative.generic_string();
+}
 
 ojson value_counts(const ValueCounts& v) {
   return {{"nan", v.nan}, {"pos_inf", v.pos_inf}, {"neg_inf", v.neg_inf}, {"negative", v.negative}, {"above_one", v.above_one}};
@@ -464,7 +475,8 @@ RunReport read_report(const json& j) {
                                           v < kResultsSchemaVersion ? "; re-run the cells with this shaderbed"
                                                                     : "; use the shaderbed that wrote the file")};
   RunReport report;
-  if (const json* t = object_at(j, "tool", "")) {
+  // "tools", as every other JSON shaderbed writes; "tool" in files written before.
+  if (const json* t = object_at(j, member(j, "tools") ? "tools" : "tool", "")) {
     read(*t, "glslang", "/tool", report.tools.glslang);
     read(*t, "spirv_tools", "/tool", report.tools.spirv_tools);
     read(*t, "spirv_cross", "/tool", report.tools.spirv_cross);
@@ -516,7 +528,7 @@ RunReport read_report(const json& j) {
 ojson report_json(const RunReport& report) {
   ojson j;
   j["schema"] = kResultsSchemaVersion;
-  j["tool"] = json_tools(report.tools);
+  j["tools"] = json_tools(report.tools);
   j["run_id"] = report.run_id;
   j["cases"] = ojson::object();
   for (const auto& [name, digest] : report.case_digests) j["cases"][name] = digest;
@@ -529,10 +541,10 @@ ojson report_json(const RunReport& report) {
   j["workers"] = report.workers;
   if (report.cache) {   // optional: merged reports have none
     const CacheUse& c = *report.cache;
-    j["cache"] = {{"driver", {{"enabled", c.driver_cache}, {"dir", c.driver_cache_dir}}},
+    j["cache"] = {{"driver", {{"enabled", c.driver_cache}, {"dir", home_relative(c.driver_cache_dir)}}},
                   {"compile",
                    {{"enabled", c.compile_cache},
-                    {"dir", c.compile_cache_dir},
+                    {"dir", home_relative(c.compile_cache_dir)},
                     {"hits", c.compile_hits},
                     {"misses", c.compile_misses},
                     {"memory_hits", c.compile_memory_hits}}}};

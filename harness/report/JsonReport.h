@@ -12,9 +12,12 @@ namespace shaderbed {
 // written, always (empty strings and zeros included), so write -> read -> write is exact:
 //
 // {"schema": 2,
-//  "tool": {"glslang", "spirv_tools", "spirv_cross", "llvm", "mesa": {"vulkan", "gl"}},
+//  "tools": {"glslang", "spirv_tools", "spirv_cross", "llvm", "mesa": {"vulkan", "gl"},
+//            "vulkan_device"},                  ("tool" before; still read)
 //  "run_id": "...", "shard": "I/N" or "", "out_dir": "...", "wall_ms": 1234.5, "workers": 2,
 //  "cases": {"phong": "<hex digest of its case file>", ...},
+//  "cache": {"driver": {"enabled", "dir"}, "compile": {"enabled", "dir", "hits", "misses",
+//            "memory_hits"}},   (run only; a folder under $HOME is written "~/...")
 //  "incomplete": {"signal": 2, "reason": "interrupted by SIGINT after 120 of 1400 cells"},   (only when so)
 //  "totals": {"cells", "pass", "fail", "known", "error", "skipped"},        (derived; ignored on read)
 //  "results": [{

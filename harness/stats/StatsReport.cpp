@@ -58,8 +58,8 @@ std::string csv_field(const std::string& s) {
 
 std::string to_json(const StatsReport& report) {
   json j;
-  j["tool"] = json::object();
-  for (const auto& [k, v] : report.tool) j["tool"][k] = v;
+  j["tools"] = json::object();
+  for (const auto& [k, v] : report.tool) j["tools"][k] = v;
   j["entries"] = json::array();
   for (const StatsEntry& e : report.entries) {
     json x = {{"case", e.case_name}, {"variant", e.variant}, {"language", e.language}, {"stage", e.stage}};
@@ -85,8 +85,10 @@ Result<StatsReport> from_json(const std::string& text) {
   if (j.is_discarded() || !j.is_object() || !j.contains("entries") || !j["entries"].is_array())
     return fail(ErrorStage::stats, "not a `shaderbed stats --json` file (no \"entries\" array)");
   StatsReport r;
-  if (j.contains("tool") && j["tool"].is_object())
-    for (const auto& [k, v] : j["tool"].items())
+  // "tools", as every JSON shaderbed writes; "tool" in baselines written before.
+  const char* tools = j.contains("tools") ? "tools" : "tool";
+  if (j.contains(tools) && j[tools].is_object())
+    for (const auto& [k, v] : j[tools].items())
       if (v.is_string()) r.tool[k] = v.get<std::string>();
   try {
     for (const json& x : j["entries"]) {

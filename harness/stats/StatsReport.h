@@ -1,7 +1,7 @@
 #pragma once
 // The result of `shaderbed stats`: one entry per case x variant x language x stage, with
 // SPIR-V counts as compiled, after spirv-opt -O and -Os, and the SPIRV-Cross GLSL size.
-// JSON layout: {"tool": {...}, "entries": [{"case", "variant", "language",
+// JSON layout: {"tools": {...}, "entries": [{"case", "variant", "language",
 // "stage", "spirv": {...}, "spirv_opt": {...}, "spirv_os": {...}, "glsl_lines", "nir",
 // "book"}]}. Each counts object also carries "extended_calls" ({"Pow": 1, ...}).
 #include <cstddef>

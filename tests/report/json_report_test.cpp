@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
@@ -105,6 +106,36 @@ TEST(JsonReport, WritesSchemaVersionToolchainAndEveryCellField) {
         "\"scene_hash\": \"52445d0d43dbdc6d\"", "\"stored_exr\": \"stored/a.exr\"", "\"tolerance_share\": 4500.0"})
     EXPECT_NE(text.find(needle), std::string::npos) << needle << "\n" << text;
   EXPECT_EQ(std::string(R"("schema")"), text.substr(text.find('"'), 8)) << "the version comes first";
+}
+
+// One spelling, "tools", as every JSON shaderbed writes; files from before say "tool".
+TEST(JsonReport, WritesToolsAndStillReadsTool) {
+  const std::string text = to_json(every_field());
+  EXPECT_NE(text.find("\"tools\": {"), std::string::npos) << text;
+  EXPECT_EQ(text.find("\"tool\":"), std::string::npos) << text;
+  auto old = parse_json(R"({"schema": 2, "tool": {"glslang": "glslang 11", "mesa": {"gl": "llvmpipe"}}, "results": []})",
+                        "old.json");
+  ASSERT_TRUE(old) << old.error().to_string();
+  EXPECT_EQ(old->tools.glslang, "glslang 11");
+  EXPECT_EQ(old->tools.gl_driver, "llvmpipe");
+}
+
+// The default caches are under $HOME: the report writes them "~/...", naming no user's home.
+TEST(JsonReport, CacheFoldersUnderHomeAreWrittenFromTilde) {
+  const char* saved = std::getenv("HOME");
+  const std::string before = saved ? saved : "";
+  ::setenv("HOME", "/home/someone", 1);
+  RunReport report;
+  CacheUse& cache = report.cache.emplace();
+  cache.driver_cache = cache.compile_cache = true;
+  cache.driver_cache_dir = "/home/someone/.cache/shaderbed/mesa";
+  cache.compile_cache_dir = "/srv/cache/compile";
+  const std::string text = to_json(report);
+  if (saved) ::setenv("HOME", before.c_str(), 1);
+  else ::unsetenv("HOME");
+  EXPECT_NE(text.find("\"dir\": \"~/.cache/shaderbed/mesa\""), std::string::npos) << text;
+  EXPECT_NE(text.find("\"dir\": \"/srv/cache/compile\""), std::string::npos) << "a folder elsewhere stays as given\n" << text;
+  EXPECT_EQ(text.find("/home/someone"), std::string::npos) << text;
 }
 
 TEST(JsonReport, RoundTripIsExact) {

@@ -49,7 +49,7 @@ TEST(Conventions, ChosenVulkanDeviceIsRecordedInTheResults) {
     ASSERT_EQ(status, 0) << out;
     std::ifstream in(json);
     const nlohmann::json j = nlohmann::json::parse(in);
-    EXPECT_TRUE(j["tool"]["vulkan_device"].get<std::string>().starts_with("llvmpipe")) << j["tool"].dump();
+    EXPECT_TRUE(j["tools"]["vulkan_device"].get<std::string>().starts_with("llvmpipe")) << j["tools"].dump();
     EXPECT_EQ(j["results"][0]["status"], "pass");
   }
   fs::remove(json);

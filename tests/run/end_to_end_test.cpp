@@ -114,8 +114,8 @@ TEST(EndToEnd, CliPassesWritesJsonAndImages) {
   std::ifstream in(json);
   ASSERT_TRUE(in) << out;
   const nlohmann::json j = nlohmann::json::parse(in);
-  for (const char* key : {"glslang", "spirv_tools", "spirv_cross", "mesa"}) EXPECT_TRUE(j["tool"].contains(key)) << key;
-  EXPECT_NE(j["tool"]["mesa"]["vulkan"].get<std::string>().find("Mesa"), std::string::npos);
+  for (const char* key : {"glslang", "spirv_tools", "spirv_cross", "mesa"}) EXPECT_TRUE(j["tools"].contains(key)) << key;
+  EXPECT_NE(j["tools"]["mesa"]["vulkan"].get<std::string>().find("Mesa"), std::string::npos);
   // 2 variants x 2 shapes x (GLSL: 4 paths, HLSL: 3, Cg: 3).
   ASSERT_EQ(j["results"].size(), 2u * 2u * (4u + 3u + 3u));
   for (const auto& r : j["results"]) {
