@@ -1,6 +1,5 @@
 #include "twin/Module.h"
 
-#define SPV_ENABLE_UTILITY_CODE
 #include <spirv-tools/libspirv.h>
 #include <spirv/unified1/spirv.hpp11>
 

@@ -133,7 +133,7 @@ std::string matrix_from_semantic(const UniformFacts& u, std::string& what) {
   return matrix_quantity(split_glued(ascii_lower(u.semantic)), u, what);
 }
 
-// Book-style registers (README "The scene"): c0 transform, c4 light vector, c5 eye, c6 light position.
+// Book-style registers (docs/cases.md, "The scene"): c0 transform, c4 light vector, c5 eye, c6 light position.
 std::string register_quantity(int reg, std::string& what) {
   switch (reg) {
     case 0: what = "the book's transform slot"; return "transform";

@@ -1,5 +1,5 @@
 // The book's instruction counts (fxc "approximately N instruction slots", DX9 vs_1_1 /
-// ps_2_0), from the book's §3.26 (README, "Instruction counts"). Where the book gives a literal
+// ps_2_0), from the book's §3.26 (docs/instruction-counts.md). Where the book gives a literal
 // and a constant figure the case's shader decides: our pixel shaders take the parameter
 // as a uniform, so they get the "as a constant" number; literal variants ("*_literal")
 // get the other.

@@ -5,7 +5,7 @@ harness/CMakeLists.txt).
 
 usage: gen_opcode_classes.py CORE_GRAMMAR GLSL_STD_450_GRAMMAR OUTPUT_HEADER
 
-The grammar's "class" field decides the bucket (docs: README.md, "Instruction counts"):
+The grammar's "class" field decides the bucket (docs/instruction-counts.md):
   Arithmetic, Relational_and_Logical, Bit, Derivative -> arithmetic
   Image                                             -> texture
   Control-Flow, Function (OpFunctionCall)           -> control

@@ -78,7 +78,7 @@ std::optional<ViewerAction> action_for(const KeyPress& key);
 // The table as text, one row per line, indented by `indent` spaces (for `h` and --help).
 std::string key_table(int indent = 2);
 
-// The table as Markdown (the README's "Look at it" section is written from it).
+// The table as Markdown (docs/viewer.md's key table is written from it).
 std::string key_table_markdown();
 
 }  // namespace shaderbed::viewer

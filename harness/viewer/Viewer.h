@@ -1,5 +1,5 @@
 #pragma once
-// `shaderbed view`: the book's interactive test bed (its §7; README, "Look at it")
+// `shaderbed view`: the book's interactive test bed (its §7; docs/viewer.md)
 // on shaderbed's engine. A window shows one cell of a case, drawn offscreen by the
 // backend `run` uses and judged against the same reference; keys (viewer/KeyMap.h) change
 // the cell, the view and the case's parameters, the mouse moves the light, and a change

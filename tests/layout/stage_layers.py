@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Checks the stage layering README.md's Layout section states: every #include of a file in
+"""Checks the stage layering docs/development.md's Layout section states: every #include of a file in
 harness/ names a stage its own stage may include, and harness/CMakeLists.txt links each
 stage library to exactly what its includes need (no link runs up, no include goes unlinked).
 
@@ -17,11 +17,11 @@ def fail(message):
     sys.exit(1)
 
 
-# README's ```stages block: "stage: what it may include" per line, bottom to top.
-readme = open(os.path.join(root, "README.md"), encoding="utf-8").read()
-block = re.search(r"```stages\n(.*?)```", readme, re.S)
+# docs/development.md's ```stages block: "stage: what it may include" per line, bottom to top.
+development = open(os.path.join(root, "docs", "development.md"), encoding="utf-8").read()
+block = re.search(r"```stages\n(.*?)```", development, re.S)
 if not block:
-    fail("README.md has no ```stages block in its Layout section")
+    fail("docs/development.md has no ```stages block in its Layout section")
 allowed = {}
 for line in block.group(1).splitlines():
     line = line.split("#")[0].strip()
@@ -31,7 +31,7 @@ for line in block.group(1).splitlines():
     names = below.split()
     unknown = [n for n in names if n not in allowed]
     if unknown:
-        fail(f"README stage '{stage}' may include {unknown}, which are not listed below it")
+        fail(f"docs/development.md stage '{stage}' may include {unknown}, which are not listed below it")
     allowed[stage.strip()] = set(names)
 
 
@@ -56,7 +56,7 @@ for top in ("harness",):
             relative = os.path.relpath(path, os.path.join(root, top))
             stage = stage_of(relative)
             if stage is None:
-                problems.append(f"harness/{relative}: its folder is no stage of README's ```stages block")
+                problems.append(f"harness/{relative}: its folder is no stage of docs/development.md's ```stages block")
                 continue
             with open(path, encoding="utf-8", errors="replace") as f:
                 for number, line in enumerate(f, 1):

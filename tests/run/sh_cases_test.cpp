@@ -1,4 +1,4 @@
-// The SH cases end to end (harness/prt, README "Spherical-harmonic lighting"): every cell
+// The SH cases end to end (harness/prt, docs/sh-lighting.md): every cell
 // passes against the truncated SH in double, carries its error against the exact
 // integral, and the approximation's own error falls as bands are added.
 #include <fstream>

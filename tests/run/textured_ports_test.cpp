@@ -88,7 +88,7 @@ TEST(TexturedPorts, TextureMutantsStillFail) {
 }
 
 // A case whose original is judged on GL (normal_map.toml: glsl on gl/glsl) still draws it
-// there when the run is filtered to Vulkan, as README promises; on gl/spirv too.
+// there when the run is filtered to Vulkan (a filter chooses the cells judged, not their reference); on gl/spirv too.
 TEST(TexturedPorts, AGlJudgedOriginalIsDrawnUnderAVulkanFilter) {
   shaderbed::test::TempDir dir("gl_original");
   // Shader and texture paths are relative to the folder above cases/.

@@ -218,12 +218,12 @@ TEST(ViewerKeys, EveryKeyIsBoundOnceAndThePrintedTableIsTheBoundOne) {
   EXPECT_NE(key_table_markdown().find("render \\| reference \\| error"), std::string::npos) << key_table_markdown();
 }
 
-TEST(ViewerKeys, TheReadmeShowsTheBoundTable) {
-  std::ifstream in(std::string(SHADERBED_SOURCE_DIR) + "/README.md");
+TEST(ViewerKeys, TheViewerDocShowsTheBoundTable) {
+  std::ifstream in(std::string(SHADERBED_SOURCE_DIR) + "/docs/viewer.md");
   std::stringstream readme;
   readme << in.rdbuf();
   EXPECT_NE(readme.str().find(key_table_markdown()), std::string::npos)
-      << "README.md's \"Look at it\" table is not the bound one; it should read:\n" << key_table_markdown();
+      << "docs/viewer.md's key table is not the bound one; it should read:\n" << key_table_markdown();
 }
 
 TEST(ViewerState, AnUntouchedViewIsTheRunsScene) {
