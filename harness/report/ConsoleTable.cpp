@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "report/ConsoleColour.h"
 #include "report/Markup.h"
 
 namespace shaderbed {
@@ -16,6 +17,13 @@ std::string verdict(const CellResult& r) {
   if (r.status == CellStatus::fail) return r.known_failure ? "known" : "FAIL";
   if (r.status == CellStatus::skipped) return "skip";
   return "ERROR";
+}
+
+Tint tint_of(const CellResult& r) {
+  if (r.status == CellStatus::pass) return Tint::pass;
+  if (r.status == CellStatus::fail) return r.known_failure ? Tint::warn : Tint::fail;
+  if (r.status == CellStatus::skipped) return Tint::none;
+  return Tint::warn;
 }
 
 // "1.234 [1.201, 1.310]": the median and its confidence interval, or "-".
@@ -60,14 +68,20 @@ void print_table(const RunReport& report, std::FILE* out, const TableOptions& op
   for (size_t c = 0; c < columns; ++c) width[c] = headers[c].size();
   for (const auto& row : rows)
     for (size_t c = 0; c < columns; ++c) width[c] = std::max(width[c], row[c].size());
-  auto print_row = [&](auto&& cell) {
+  constexpr size_t verdict_column = 9;
+  // The escape codes go around the word, the padding after them, so the columns stay aligned.
+  auto print_row = [&](auto&& cell, const CellResult* r) {
     std::string line;
-    for (size_t c = 0; c < columns; ++c) line += fmt::format("{:<{}}  ", cell(c), width[c]);
+    for (size_t c = 0; c < columns; ++c) {
+      const std::string text = cell(c);
+      line += (r && c == verdict_column ? tinted(text, tint_of(*r), options.colour) : text) +
+              std::string(width[c] - text.size() + 2, ' ');
+    }
     while (!line.empty() && line.back() == ' ') line.pop_back();
     fmt::print(out, "{}\n", line);
   };
-  print_row([&](size_t c) { return headers[c]; });
-  for (const auto& row : rows) print_row([&](size_t c) { return row[c]; });
+  print_row([&](size_t c) { return headers[c]; }, nullptr);
+  for (size_t i = 0; i < rows.size(); ++i) print_row([&](size_t c) { return rows[i][c]; }, &report.results[i]);
 
   if (options.timing && !report.results.empty())
     fmt::print(out, "\ntimes: each draw repeated after a warm-up; [CI] is the median's confidence interval "

@@ -11,6 +11,7 @@ namespace shaderbed {
 // failures and totals under it are ConsoleProblems'.
 struct TableOptions {
   bool timing = false;   // add the draw's timed repeats (wall and driver clock) and build time
+  bool colour = false;   // tint the verdicts as the summary does (report/ConsoleColour.h)
 };
 void print_table(const RunReport& report, std::FILE* out, const TableOptions& options = {});
 

@@ -9,7 +9,6 @@
 
 #include "report/JsonValues.h"
 #include "report/Markup.h"
-#include "core/AtomicFile.h"
 
 namespace shaderbed {
 namespace {
@@ -118,12 +117,6 @@ std::string sweep_json(const SweepResult& sweep, const std::vector<SceneChart>& 
   for (const SceneChart& c : charts) chart_list.push_back({{"scene", c.scene}, {"png", c.files.png}, {"svg", c.files.svg}});
   j["charts"] = std::move(chart_list);
   return j.dump(2) + "\n";
-}
-
-Result<void> write_sweep_json(const SweepResult& sweep, const std::vector<SceneChart>& charts, const std::string& path) {
-  if (auto ok = write_file_atomically(path, sweep_json(sweep, charts), "the sweep's JSON"); !ok)
-    return std::unexpected(Error(ok.error()).in_stage(ErrorStage::sweep));
-  return {};
 }
 
 Result<std::vector<SceneChart>> write_sweep_charts(const SweepResult& sweep, const std::string& out_stem) {

@@ -27,7 +27,6 @@ struct SceneChart {
 };
 
 std::string sweep_json(const SweepResult& sweep, const std::vector<SceneChart>& charts);
-Result<void> write_sweep_json(const SweepResult& sweep, const std::vector<SceneChart>& charts, const std::string& path);
 
 // Per scene: time (draw wall median) across, interior RMSE up, one series per variant,
 // the Pareto front drawn. One scene: out_stem.png and .svg; several: out_stem-<i>.png ...

@@ -60,6 +60,12 @@ def colour():
     status, out = cli(ONE_CELL + ["--color", "always"])
     check(status == 0, out)
     check("\033[32m" in out, "a pass is green with --color always:\n" + out)
+    # --table: the verdict word is tinted, and the columns after it stay where the header has them.
+    status, out = cli(ONE_CELL + ["--table", "--color", "always"])
+    rows = [l for l in out.split("\n") if l.startswith("lambert ") or l.startswith("case ")]
+    check(status == 0 and len(rows) >= 2 and "\033[32mpass\033[0m" in rows[1], "--table tints pass:\n" + out)
+    plain = [l.replace("\033[32m", "").replace("\033[0m", "") for l in rows]
+    check(plain[1].index("pass") == plain[0].index("verdict"), "--table columns stay aligned:\n" + "\n".join(plain))
     # A pipe, --color never, or NO_COLOR with auto: no escape codes at all.
     for args, env in [(["--color", "never"], None), ([], None), (["--color", "auto"], {"NO_COLOR": "1"})]:
         status, out = cli(ONE_CELL + args, env)
@@ -89,6 +95,24 @@ def json_stdout():
     report = json.loads(out)
     check(len(report["results"]) == 1, out)
     check("1 cells: 1 passed" in err, "the totals go to stderr:\n" + err)
+
+
+def json_stdout_for_tables():
+    """stats, sweep and hard print a table as they go: with --json - it moves to stderr and
+    stdout is the JSON alone, with no file named '-' left behind."""
+    for args, key in [(["stats", "--case", "lambert", "--variant", "pixel", "--no-nir"], "entries"),
+                      (["sweep", "lambert", "--variant", "pixel", "--size", "16", "--repeat", "1", "--warmup", "0"],
+                       "points"),
+                      (["hard", "--case", "lambert", "--backend", "vulkan", "--size", "16"], "rows")]:
+        status, out, err = cli(args + ["--json", "-"], merged=False)
+        check(status in (0, 1), f"{args[0]}: exit {status}\n" + out + err)
+        try:
+            report = json.loads(out)
+        except json.JSONDecodeError as e:
+            check(False, f"{args[0]}: stdout is not JSON ({e}):\n{out[:2000]}")
+        check(isinstance(report, dict) and report.get(key), f"{args[0]}: the JSON has its {key}:\n{out[:2000]}")
+        check("lambert" in err, f"{args[0]}: the table went to stderr:\n{err}")
+        check(not os.path.exists("-"), f"{args[0]}: wrote a file named '-'")
 
 
 def path_filter():

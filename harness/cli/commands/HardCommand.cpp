@@ -10,10 +10,10 @@
 #include <fmt/format.h>
 
 #include "cli/commands/Command.h"
+#include "cli/commands/JsonOutput.h"
 #include "compile/IsolatedCompile.h"
 #include "hard/HardOutput.h"
 #include "hard/HardRunner.h"
-#include "core/AtomicFile.h"
 
 namespace shaderbed {
 
@@ -37,10 +37,11 @@ Command add_hard_command(CLI::App& app) {
   cmd->add_flag("--all-paths", o->all_paths,
                 "Every GL path (native GLSL, SPIR-V, SPIRV-Cross GLSL), not only the first of each backend");
   cmd->add_option("--size", o->size, "Slice and image size in pixels (slices round up to odd)")->capture_default_str();
-  cmd->add_option("--json", *json_path, "Write the report as JSON");
+  cmd->add_option("--json", *json_path, "Write the report as JSON (-: standard output, the table then on stderr)");
   cmd->add_option("--out", o->out_dir, "Write images (render, reference, relative error, value mask) here");
   return {cmd, [o, json_path] {
             isolate_compiles();   // a user's case may crash glslang: an error, not the end of the command
+            const JsonOutput json(*json_path);
             o->progress = [](const std::string& step) { fmt::print(stderr, "hard: {}\n", step); };
             // A path to a .toml file is the user's own case; a bare name is the library's.
             std::vector<std::string> names;
@@ -57,9 +58,8 @@ Command add_hard_command(CLI::App& app) {
             for (const hard::HardRow& r : report->rows)
               if (r.status == CellStatus::error && errors.insert(r.message).second)
                 fmt::print(stderr, "shaderbed: hard: {}\n", r.message);
-            if (!json_path->empty()) {
-              if (auto ok = write_file_atomically(*json_path, hard::json_report(*report).dump(2) + "\n", "the hard-case JSON");
-                  !ok) {
+            if (json.wanted()) {
+              if (auto ok = json.write(hard::json_report(*report).dump(2) + "\n", "the hard-case JSON"); !ok) {
                 fmt::print(stderr, "shaderbed: hard: {}\n", ok.error().to_string());
                 return kExitFail;
               }

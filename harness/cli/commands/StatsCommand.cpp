@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands/Command.h"
+#include "cli/commands/JsonOutput.h"
 #include "compile/IsolatedCompile.h"
 #include "core/WritablePath.h"
 #include "report/ConsoleProgress.h"
@@ -42,7 +43,7 @@ Command add_stats_command(CLI::App& app) {
       ->delimiter(',');
   cmd->add_option("--lang", args->options.languages, "Languages (glsl, hlsl, cg); default: all")->delimiter(',');
   cmd->add_option("--cases-dir", args->options.cases_dir, "Folder of case files")->default_str(default_cases_dir());
-  cmd->add_option("--json", args->json, "Write the counts as JSON");
+  cmd->add_option("--json", args->json, "Write the counts as JSON (-: standard output, the table then on stderr)");
   cmd->add_option("--csv", args->csv, "Write the counts as CSV");
   cmd->add_option("--from", args->from, "Use this earlier --json file instead of compiling the library");
   cmd->add_option("--baseline", args->baseline, "Compare with this earlier --json file (shader-db style report)");
@@ -70,6 +71,7 @@ Command add_stats_command(CLI::App& app) {
               fmt::print(stderr, "shaderbed: --fail-above needs --baseline\n");
               return kExitBadInput;
             }
+            const JsonOutput json(args->json);
             const auto start = std::chrono::steady_clock::now();
             Result<stats::StatsReport> report = fail(ErrorStage::stats, "nothing");
             if (!args->from.empty()) {
@@ -100,8 +102,8 @@ Command add_stats_command(CLI::App& app) {
             if (args->from.empty())
               fmt::print("{} entries in {:.1f} s{}\n", report->entries.size(), seconds,
                          errors ? fmt::format(", {} with compile errors", errors) : "");
-            if (!args->json.empty())
-              if (auto ok = stats::write_text_file(args->json, stats::to_json(*report)); !ok) {
+            if (json.wanted())
+              if (auto ok = json.write(stats::to_json(*report), "the counts' JSON"); !ok) {
                 fmt::print(stderr, "shaderbed: {}\n", ok.error().to_string());
                 return kExitFail;
               }

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands/Command.h"
+#include "cli/commands/JsonOutput.h"
 #include "compile/IsolatedCompile.h"
 #include "run/Runner.h"
 #include "report/HtmlReport.h"
@@ -59,7 +60,7 @@ Command add_sweep_command(CLI::App& app) {
   cmd->add_option("--repeat", o.timing.runs, "Timed draws per point")->capture_default_str()->check(CLI::Range(1, 1000));
   cmd->add_option("--warmup", o.timing.warmup, "Untimed draws before them")->capture_default_str()->check(CLI::Range(0, 100));
   cmd->add_option("--json", args->json, "Write the points as JSON: {\"points\": [{\"params\", \"rmse\", \"max_abs\", "
-                                        "\"time_ms\", \"instructions\", ...}]}");
+                                        "\"time_ms\", \"instructions\", ...}]} (-: standard output, the table then on stderr)");
   cmd->add_option("--chart", args->chart,
                   "Write the speed-against-error chart as STEM.png and STEM.svg (gnuplot); one per scene "
                   "(STEM-1, STEM-2, ...) when a case parameter is swept");
@@ -93,6 +94,7 @@ Command add_sweep_command(CLI::App& app) {
             };
             // The case's shaders compile in a child process: a glslang crash is an error point.
             isolate_compiles();
+            const JsonOutput json(args->json);
             const StopSignals signals;
             options.stop_requested = [&signals] { return signals.caught(); };
             auto sweep = run_sweep(options);
@@ -109,9 +111,9 @@ Command add_sweep_command(CLI::App& app) {
               // Only what is quick: the points so far, then the status a shell expects.
               fmt::print(stderr, "shaderbed: sweep: interrupted by {} after {} of {} points{}\n", sweep->interrupted_by,
                          sweep->steps_done, sweep->steps_planned,
-                         args->json.empty() ? "" : "; the points so far are in " + args->json);
-              if (!args->json.empty())
-                if (auto ok = write_sweep_json(*sweep, {}, args->json); !ok)
+                         json.wanted() && !json.on_stdout() ? "; the points so far are in " + args->json : "");
+              if (json.wanted())
+                if (auto ok = json.write(sweep_json(*sweep, {}), "the sweep's JSON"); !ok)
                   fmt::print(stderr, "shaderbed: {}\n", ok.error().to_string());
               return signals.exit_status();
             }
@@ -129,12 +131,12 @@ Command add_sweep_command(CLI::App& app) {
               charts = std::move(*written);
               for (const SceneChart& c : charts) fmt::print("chart: {} {}\n", c.files.png, c.files.svg);
             }
-            if (!args->json.empty()) {
-              if (auto ok = write_sweep_json(*sweep, charts, args->json); !ok) {
+            if (json.wanted()) {
+              if (auto ok = json.write(sweep_json(*sweep, charts), "the sweep's JSON"); !ok) {
                 fmt::print(stderr, "shaderbed: {}\n", ok.error().to_string());
                 return kExitFail;
               }
-              fmt::print("points: {}\n", args->json);
+              if (!json.on_stdout()) fmt::print("points: {}\n", args->json);
             }
             if (!args->html.empty()) {
               HtmlOptions html;
