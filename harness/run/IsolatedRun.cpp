@@ -304,11 +304,10 @@ class Supervisor {
         continue;
       }
       const std::string how = fmt::format("timeout in {}: the step took longer than {:g} s (--step-timeout)", w.step, limit);
-      if (!w.greeted) {
-        if (auto ok = failed_start(w, how); !ok) return ok;
-      } else {
+      if (!w.greeted)
+        failed_start(w, how);
+      else
         lost(w, how);
-      }
     }
     return {};
   }
@@ -330,7 +329,10 @@ class Supervisor {
       if (n < 0 && (errno == EAGAIN || errno == EINTR)) return {};
       // End of the pipe: the worker is gone.
       const std::string how = end_worker(w, false);
-      if (!w.greeted) return failed_start(w, how);
+      if (!w.greeted) {
+        failed_start(w, how);
+        return {};
+      }
       if (out_of_memory(how))
         lost(w, fmt::format("out of memory: the worker's allocations passed its {} MiB limit (--worker-memory)",
                             o_.workers.worker_memory_mb));
@@ -495,7 +497,7 @@ class Supervisor {
   // A worker ended before its hello: another is started in its place, a few times; then
   // the slot gives up and the cells it had left (every queued one, when no slot is left)
   // become errors, and the run writes its report even when no worker ever started.
-  Result<void> failed_start(Worker& w, std::string how) {
+  void failed_start(Worker& w, std::string how) {
     retired_counts_ = retired_counts_ + w.counts;
     const std::optional<size_t> bundle = w.bundle;
     const size_t position = w.position;
@@ -508,7 +510,7 @@ class Supervisor {
         w.bundle = bundle;
         w.position = position;
         w.start_failures = failures;
-        return {};
+        return;
       }
       how = replacement.error().to_string();
     }
@@ -522,7 +524,6 @@ class Supervisor {
         queue_.pop_front();
         give_up(w, next, 0, message);
       }
-    return {};
   }
 
   // Without a worker the rest of `bundle` from `position` cannot run: its cells become
