@@ -82,6 +82,7 @@ Command add_stats_command(CLI::App& app) {
               args->options.on_step = [&progress](size_t done, size_t total, const std::string& what) {
                 progress.update(done, total, "steps", what);
               };
+              args->options.gl_platform = chosen_gl_platform();
               report = stats::collect_stats(args->options);
             }
             if (!report) {

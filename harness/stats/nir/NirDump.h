@@ -9,14 +9,16 @@
 // Methods (Mesa 22.3.6, Debian 12; see tests/nir and the report):
 //   gallium_trace  GALLIUM_TRACE=<file> GALLIUM_TRACE_NIR=<big>: the trace driver wraps the
 //                  gallium screen and writes the NIR handed to create_{vs,fs}_state.
-//                  lavapipe (Vulkan) and OSMesa (GL): the NIR llvmpipe compiles.
-//                  Works on lavapipe. On OSMesa the helper hangs with GALLIUM_TRACE set
+//                  lavapipe (Vulkan) and OSMesa or EGL (GL): the NIR llvmpipe compiles.
+//                  Works on lavapipe. On GL the helper hangs with GALLIUM_TRACE set
 //                  (measured on 22.3.6), so it is refused with an error, not run.
 //   glsl_dump      MESA_GLSL=dump, shader cache disabled, on stderr (GL only): prints the
-//                  GLSL IR and then the NIR of each linked stage (all three GL paths).
+//                  GLSL IR and then the NIR of each linked stage (all three GL paths), on
+//                  OSMesa and on EGL alike: it is Mesa's GL front end, not the platform's.
 //   automatic      gallium_trace on Vulkan, glsl_dump on GL.
 #include <string>
 
+#include "backends/Backend.h"
 #include "pipeline/ShaderPath.h"
 #include "compile/ShaderModule.h"
 #include "core/Error.h"
@@ -40,6 +42,7 @@ struct NirRequest {
   NirBackend backend = NirBackend::vulkan;
   ShaderPath path = ShaderPath::spirv;   // GL: spirv, native_glsl or cross_glsl; Vulkan: spirv
   NirMethod method = NirMethod::automatic;
+  GlPlatformChoice gl_platform;          // GL: the platform the helper draws on (OSMesa unless chosen)
   std::string helper;                    // the helper binary; empty: find it (see nir_dump_helper)
 };
 
