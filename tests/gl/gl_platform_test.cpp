@@ -13,6 +13,7 @@
 #include "GlTestSupport.h"
 #include "TextureProbes.h"
 #include "backends/gl/EglDevices.h"
+#include "backends/gl/GlPlatform.h"
 #include "backends/gl/GlRenderer.h"
 #include "compile/Compiler.h"
 #include "scene/Primitives.h"
@@ -49,8 +50,9 @@ std::string first_difference(const Image& a, const Image& b) {
   return "";
 }
 
-// Draws `job` on OSMesa, then on each EGL platform, then on OSMesa again (the platforms
-// take turns on this thread), and expects one image from all of them.
+// Draws `job` on OSMesa and on each EGL platform, taking turns on this thread so that an
+// EGL context that EGL still holds current is drawn with again after OSMesa drew, and
+// expects one image from all of them.
 void expect_alike_on_every_platform(const CompiledProgram& program, ShaderPath path, const Mesh& mesh,
                                     const UniformResolver& uniforms, const TextureResolver* textures = nullptr) {
   const auto draw = [&](const GlPlatformChoice& platform) -> Result<Image> {
@@ -64,7 +66,7 @@ void expect_alike_on_every_platform(const CompiledProgram& program, ShaderPath p
   auto osmesa = draw(kOsMesa);
   ASSERT_TRUE(osmesa) << osmesa.error().to_string();
   ASSERT_GT(coverage_count(*osmesa), kImageSize * kImageSize / 4) << "the mesh covers a good part of the image";
-  for (const GlPlatformChoice& platform : {kEglSurfaceless, kEglSoftwareDevice, kOsMesa}) {
+  for (const GlPlatformChoice& platform : {kEglSurfaceless, kOsMesa, kEglSurfaceless, kEglSoftwareDevice, kOsMesa}) {
     auto image = draw(platform);
     ASSERT_TRUE(image) << platform.platform << " " << platform.device << ": " << image.error().to_string();
     EXPECT_EQ(first_difference(*osmesa, *image), "") << "osmesa vs " << platform.platform << " " << platform.device;
@@ -169,6 +171,35 @@ TEST(GlPlatforms, GlEraGlslDrawsAlikeOnACompatibilityContext) {
       {"gl_FrontMaterial.diffuse", {0.5f, 0.5f, 0.5f, 0.75f}},
   });
   expect_alike_on_every_platform(*program, ShaderPath::native_glsl, solid_sphere(0.9f, 24, 12), uniforms);
+}
+
+// OSMesa and Mesa's EGL drive one GL dispatch, and Mesa's eglMakeCurrent takes a context
+// EGL already holds current as nothing to do: making the EGL context current again after
+// the OSMesa one must still reach it (measured: without the release first, GL state set
+// through EGL's entry points lands in the OSMesa context).
+TEST(GlPlatforms, AContextMadeCurrentAgainAfterTheOtherPlatformIsGlsCurrentOne) {
+  auto osmesa = gl::create_gl_context(kOsMesa, 4, 5, gl::GlContext::Profile::core);
+  ASSERT_TRUE(osmesa) << osmesa.error().to_string();
+  auto egl = gl::create_gl_context(kEglSurfaceless, 4, 5, gl::GlContext::Profile::core);
+  ASSERT_TRUE(egl) << egl.error().to_string();
+  auto osmesa_gl = gl::load_gl_functions((*osmesa)->proc_loader());
+  auto egl_gl = gl::load_gl_functions((*egl)->proc_loader());
+  ASSERT_TRUE(osmesa_gl && egl_gl);
+  const auto viewport_width = [](const gl::GlFunctions& gl) {
+    GLint viewport[4] = {};
+    gl.GetIntegerv(GL_VIEWPORT, viewport);
+    return viewport[2];
+  };
+  for (int turn = 0; turn < 2; ++turn) {
+    ASSERT_TRUE((*egl)->make_current());
+    egl_gl->Viewport(0, 0, 11 + turn, 11);
+    ASSERT_TRUE((*osmesa)->make_current());
+    osmesa_gl->Viewport(0, 0, 22 + turn, 22);
+    ASSERT_TRUE((*egl)->make_current());
+    EXPECT_EQ(viewport_width(*egl_gl), 11 + turn) << "turn " << turn;
+    ASSERT_TRUE((*osmesa)->make_current());
+    EXPECT_EQ(viewport_width(*osmesa_gl), 22 + turn) << "turn " << turn;
+  }
 }
 
 TEST(GlPlatforms, EachRendererSaysWhichPlatformItIsOn) {

@@ -69,6 +69,25 @@ INSTANTIATE_TEST_SUITE_P(Backends, NirDriver,
                            return std::string(to_string(info.param.backend)) + "_" + to_string(info.param.path);
                          });
 
+// MESA_GLSL=dump is Mesa's GLSL linker printing, whatever the platform: EGL gives the NIR
+// OSMesa gives, on every GL path, and says where it read it.
+TEST(NirDriverPlatforms, EglGivesTheCountsOsMesaGives) {
+  auto program = program_from("sample_egl", kSample);
+  ASSERT_TRUE(program) << program.error().to_string();
+  for (ShaderPath path : {ShaderPath::spirv, ShaderPath::native_glsl, ShaderPath::cross_glsl}) {
+    auto osmesa = nir_counts(*program, NirRequest{.backend = NirBackend::gl, .path = path});
+    auto egl = nir_counts(*program, NirRequest{.backend = NirBackend::gl, .path = path, .gl_platform = "egl"});
+    ASSERT_TRUE(osmesa) << osmesa.error().to_string();
+    ASSERT_TRUE(egl) << to_string(path) << ": " << egl.error().to_string();
+    EXPECT_EQ(egl->method, "glsl_dump on EGL surfaceless llvmpipe");
+    for (Stage stage : {Stage::vertex, Stage::fragment}) {
+      EXPECT_EQ(egl->operator[](stage).alu, osmesa->operator[](stage).alu) << to_string(path);
+      EXPECT_EQ(egl->operator[](stage).tex, osmesa->operator[](stage).tex) << to_string(path);
+      EXPECT_EQ(egl->operator[](stage).control, osmesa->operator[](stage).control) << to_string(path);
+    }
+  }
+}
+
 TEST(NirDriverMethods, AMethodThatDoesNotWorkHereIsAnErrorNamingIt) {
   auto program = program_from("multiply", kMultiply);
   ASSERT_TRUE(program);

@@ -42,9 +42,9 @@ const char* language_name(Language l) { return to_string(l); }
 // "lavapipe", "OSMesa llvmpipe", "EGL surfaceless llvmpipe", "EGL device 1".
 std::string driver_name(const NirRequest& request) {
   if (request.backend == NirBackend::vulkan) return "lavapipe";
-  if (request.gl_platform.platform == "osmesa") return "OSMesa llvmpipe";
-  if (request.gl_platform.device.empty()) return "EGL surfaceless llvmpipe";
-  return "EGL device " + request.gl_platform.device;
+  if (request.gl_platform == "osmesa") return "OSMesa llvmpipe";
+  if (request.gl_device.empty()) return "EGL surfaceless llvmpipe";
+  return "EGL device " + request.gl_device;
 }
 
 }  // namespace
@@ -100,8 +100,8 @@ Result<NirProgramCounts> nir_counts(const CompiledProgram& program, const NirReq
                                          "--fragment", program.fragment.source_file,
                                          "--vertex-entry", program.vertex.entry_point,
                                          "--fragment-entry", program.fragment.entry_point,
-                                         "--gl-platform", request.gl_platform.platform,
-                                         "--gl-device", request.gl_platform.device};
+                                         "--gl-platform", request.gl_platform,
+                                         "--gl-device", request.gl_device};
   auto exit = run_child(args, dir->path(), ErrorStage::nir, child_environment(request.method, trace));
   if (!exit) return unavailable("cannot run the helper '" + helper + "': " + exit.error().message);
   const std::string& stderr_text = exit->stderr_text;

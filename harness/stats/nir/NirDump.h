@@ -18,7 +18,6 @@
 //   automatic      gallium_trace on Vulkan, glsl_dump on GL.
 #include <string>
 
-#include "backends/Backend.h"
 #include "pipeline/ShaderPath.h"
 #include "compile/ShaderModule.h"
 #include "core/Error.h"
@@ -42,7 +41,8 @@ struct NirRequest {
   NirBackend backend = NirBackend::vulkan;
   ShaderPath path = ShaderPath::spirv;   // GL: spirv, native_glsl or cross_glsl; Vulkan: spirv
   NirMethod method = NirMethod::automatic;
-  GlPlatformChoice gl_platform;          // GL: the platform the helper draws on (OSMesa unless chosen)
+  std::string gl_platform = "osmesa";    // GL: --gl-platform and --gl-device for the helper
+  std::string gl_device;
   std::string helper;                    // the helper binary; empty: find it (see nir_dump_helper)
 };
 
