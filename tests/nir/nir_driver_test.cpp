@@ -88,6 +88,27 @@ TEST(NirDriverPlatforms, EglGivesTheCountsOsMesaGives) {
   }
 }
 
+// The helper draws on the platform it is given: a device that does not exist is its error.
+TEST(NirDriverPlatforms, TheHelperDrawsOnThePlatformItIsGiven) {
+  auto program = program_from("multiply_device", kMultiply);
+  ASSERT_TRUE(program) << program.error().to_string();
+  auto counts = nir_counts(*program, NirRequest{.backend = NirBackend::gl, .gl_platform = "egl", .gl_device = "no-such-gpu"});
+  ASSERT_FALSE(counts);
+  EXPECT_NE(counts.error().message.find("no-such-gpu matches none"), std::string::npos) << counts.error().message;
+}
+
+// GALLIUM_TRACE, which OSMesa hangs on, works on EGL (measured on Mesa 22.3.6).
+TEST(NirDriverPlatforms, GalliumTraceWorksOnEgl) {
+  auto program = program_from("sample_trace", kSample);
+  ASSERT_TRUE(program) << program.error().to_string();
+  auto counts = nir_counts(*program, NirRequest{.backend = NirBackend::gl, .method = NirMethod::gallium_trace,
+                                                .gl_platform = "egl"});
+  ASSERT_TRUE(counts) << counts.error().to_string();
+  EXPECT_EQ(counts->method, "gallium_trace on EGL surfaceless llvmpipe");
+  EXPECT_EQ(counts->fragment.tex, 1);
+  EXPECT_GE(counts->vertex.alu + counts->vertex.intrinsics, 1);
+}
+
 TEST(NirDriverMethods, AMethodThatDoesNotWorkHereIsAnErrorNamingIt) {
   auto program = program_from("multiply", kMultiply);
   ASSERT_TRUE(program);

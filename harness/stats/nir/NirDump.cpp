@@ -78,9 +78,9 @@ Result<NirProgramCounts> nir_counts(const CompiledProgram& program, const NirReq
 
   if (request.backend == NirBackend::vulkan && request.method == NirMethod::glsl_dump)
     return unavailable("MESA_GLSL=dump is a GL (GLSL compiler) setting; Vulkan has no GLSL linker");
-  if (request.backend == NirBackend::gl && request.method == NirMethod::gallium_trace)
+  if (request.backend == NirBackend::gl && request.gl_platform == "osmesa" && request.method == NirMethod::gallium_trace)
     return unavailable("with GALLIUM_TRACE set, OSMesa never finishes the draw on Mesa 22.3.6 (measured: the "
-                       "trace stops after context_create and the process hangs); use glsl_dump");
+                       "trace stops after context_create and the process hangs); use glsl_dump, or --gl-platform egl");
   if (request.backend == NirBackend::vulkan && request.path != ShaderPath::spirv)
     return unavailable("Vulkan takes SPIR-V only");
   for (const ShaderModule* m : {&program.vertex, &program.fragment})
