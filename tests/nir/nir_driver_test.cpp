@@ -92,7 +92,8 @@ TEST(NirDriverPlatforms, EglGivesTheCountsOsMesaGives) {
 TEST(NirDriverPlatforms, TheHelperDrawsOnThePlatformItIsGiven) {
   auto program = program_from("multiply_device", kMultiply);
   ASSERT_TRUE(program) << program.error().to_string();
-  auto counts = nir_counts(*program, NirRequest{.backend = NirBackend::gl, .gl_platform = "egl", .gl_device = "no-such-gpu"});
+  auto counts = nir_counts(
+      *program, NirRequest{.backend = NirBackend::gl, .gl_platform = "egl", .gl_device = "no-such-gpu"});
   ASSERT_FALSE(counts);
   EXPECT_NE(counts.error().message.find("no-such-gpu matches none"), std::string::npos) << counts.error().message;
 }

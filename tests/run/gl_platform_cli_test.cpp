@@ -60,8 +60,9 @@ size_t expect_identical_images(const std::string& a_dir, const std::string& b_di
     EXPECT_TRUE(image_a && image_b) << id;
     if (!image_a || !image_b) continue;
     EXPECT_EQ(image_a->coverage, image_b->coverage) << id;
+    const size_t bytes = image_a->rgba.size() * sizeof(double);
     const bool same = image_a->rgba.size() == image_b->rgba.size() &&
-                      std::memcmp(image_a->rgba.data(), image_b->rgba.data(), image_a->rgba.size() * sizeof(double)) == 0;
+                      std::memcmp(image_a->rgba.data(), image_b->rgba.data(), bytes) == 0;
     EXPECT_TRUE(same) << id << " differs between the platforms";
     ++compared;
   }

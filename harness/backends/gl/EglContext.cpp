@@ -31,7 +31,8 @@ Result<PlatformDisplay> surfaceless_display(const EglLibrary& egl) {
   pin_software_rendering();
   const EGLDisplay display = egl.get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
   if (display == EGL_NO_DISPLAY)
-    return fail(ErrorStage::gl, "eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA) failed: " + egl_error_text(egl));
+    return fail(ErrorStage::gl,
+                "eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA) failed: " + egl_error_text(egl));
   return PlatformDisplay{display, "egl surfaceless"};
 }
 

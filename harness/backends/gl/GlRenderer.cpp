@@ -7,8 +7,8 @@
 
 #include "backends/MesaEnvironment.h"
 #include "backends/gl/GlError.h"
-#include "backends/gl/GlPlatform.h"
 #include "backends/gl/GlMeshUpload.h"
+#include "backends/gl/GlPlatform.h"
 #include "backends/gl/GlProgramBuilder.h"
 #include "backends/gl/GlProgramInterface.h"
 #include "backends/gl/GlRenderState.h"
@@ -95,8 +95,8 @@ Result<std::unique_ptr<GlRenderer>> GlRenderer::create(const GlPlatformChoice& p
   // glClipControl and the program interface query are core in 4.5; Mesa's loader
   // returns no-op stubs for what a context lacks, so the version is the real check.
   if (major * 10 + minor < 45)
-    return std::unexpected(gl_error(renderer->context_->platform() + " gave a " + std::to_string(major) + "." + std::to_string(minor) +
-                                    " context; the GL backend needs 4.5 core"));
+    return std::unexpected(gl_error(renderer->context_->platform() + " gave a " + std::to_string(major) + "." +
+                                    std::to_string(minor) + " context; the GL backend needs 4.5 core"));
   renderer->device_name_ = gl_string(gl, GL_RENDERER);
   renderer->driver_version_ = renderer->device_name_ + ", OpenGL " + gl_string(gl, GL_VERSION);
   renderer->has_gl_spirv_ = has_extension(gl, "GL_ARB_gl_spirv");
