@@ -86,6 +86,9 @@ class Backend {
   virtual std::string_view name() const = 0;          // "vulkan", "gl"
   virtual std::string driver_version() const = 0;     // e.g. "Mesa 22.3.6 (LLVM 15.0.6)"
   virtual std::string device_name() const = 0;        // e.g. "llvmpipe (LLVM 15.0.6, 256 bits) [cpu]"
+  // How the process reached the API when there is more than one way: GL's "osmesa", "egl
+  // surfaceless" or "egl device 0: software"; "" for Vulkan's one loader.
+  virtual std::string platform() const { return ""; }
   // The paths this backend offers for programs of a language.
   virtual std::vector<ShaderPath> paths(Language) const = 0;
   virtual Result<RenderOutput> render(const DrawJob&) = 0;
@@ -103,5 +106,14 @@ Result<std::unique_ptr<Backend>> make_vulkan_backend();
 void choose_vulkan_device(std::string index_or_name);
 const std::string& chosen_vulkan_device();
 Result<std::unique_ptr<Backend>> make_gl_backend();
+// --gl-platform and --gl-device: how every later make_gl_backend() reaches GL
+// (backends/gl/GlPlatform.h, docs/gl-platforms.md). Set before any backend starts.
+struct GlPlatformChoice {
+  std::string platform = "osmesa";   // "osmesa" or "egl"
+  std::string device;                // egl: an EGL device's index or a part of its name; "" = surfaceless
+  bool operator==(const GlPlatformChoice&) const = default;
+};
+void choose_gl_platform(GlPlatformChoice choice);
+const GlPlatformChoice& chosen_gl_platform();
 
 }  // namespace shaderbed

@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "backends/Backend.h"
 #include "core/ThisExecutable.h"
 #include "core/ChildProcess.h"
 #include "core/ScratchDirectory.h"
@@ -47,6 +48,11 @@ struct Timed {
 
 Result<Timed> run_timed(const std::vector<std::string>& args, const fs::path& cache_dir, const fs::path& capture) {
   std::vector<std::string> argv = {self_binary()};
+  // The GL platform this bench was given, so the commands timed start the GL it would use.
+  if (const GlPlatformChoice& gl = chosen_gl_platform(); gl != GlPlatformChoice{}) {
+    argv.insert(argv.end(), {"--gl-platform", gl.platform});
+    if (!gl.device.empty()) argv.insert(argv.end(), {"--gl-device", gl.device});
+  }
   argv.insert(argv.end(), args.begin(), args.end());
   const auto t0 = std::chrono::steady_clock::now();
   auto exit = run_child(argv, capture, ErrorStage::bench, child_environment(cache_dir));

@@ -9,7 +9,7 @@
 
 int main(int argc, char** argv) {
   CLI::App app{"shaderbed: a cross-API shader test bench. Compiles HLSL, Cg and GLSL lighting shaders to SPIR-V, "
-               "renders them on Vulkan (lavapipe) and OpenGL (OSMesa) and compares every image with a "
+               "renders them on Vulkan (lavapipe) and OpenGL (OSMesa or EGL) and compares every image with a "
                "double-precision CPU reference."};
   app.name("shaderbed");   // help's usage line, not the build folder's path of argv[0]
   app.require_subcommand(0, 1);   // none only with --version
@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
                                           shaderbed::add_completion_command(app)};
   shaderbed::add_cache_options(app);
   shaderbed::add_vulkan_device_option(app);
+  shaderbed::add_gl_platform_options(app);
   shaderbed::add_colour_option(app);
   shaderbed::add_version_flag(app);
   shaderbed::format_help(app);

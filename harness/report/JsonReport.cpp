@@ -482,6 +482,7 @@ RunReport read_report(const json& j) {
     read(*t, "spirv_cross", "/tool", report.tools.spirv_cross);
     read(*t, "llvm", "/tool", report.tools.llvm);
     read(*t, "vulkan_device", "/tool", report.tools.vulkan_device);
+    read(*t, "gl_platform", "/tool", report.tools.gl_platform);   // absent in files written before EGL
     if (const json* mesa = object_at(*t, "mesa", "/tool")) {
       read(*mesa, "vulkan", "/tool/mesa", report.tools.vulkan_driver);
       read(*mesa, "gl", "/tool/mesa", report.tools.gl_driver);

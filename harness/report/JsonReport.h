@@ -13,7 +13,7 @@ namespace shaderbed {
 //
 // {"schema": 2,
 //  "tools": {"glslang", "spirv_tools", "spirv_cross", "llvm", "mesa": {"vulkan", "gl"},
-//            "vulkan_device"},                  ("tool" before; still read)
+//            "vulkan_device", "gl_platform"},   ("tool" before; still read; no gl_platform before EGL)
 //  "run_id": "...", "shard": "I/N" or "", "out_dir": "...", "wall_ms": 1234.5, "workers": 2,
 //  "cases": {"phong": "<hex digest of its case file>", ...},
 //  "cache": {"driver": {"enabled", "dir"}, "compile": {"enabled", "dir", "hits", "misses",

@@ -18,14 +18,15 @@ Json json_number(double v) {
   return v;
 }
 
-// {"glslang", "spirv_tools", "spirv_cross", "llvm", "mesa": {"vulkan", "gl"}}
+// {"glslang", "spirv_tools", "spirv_cross", "llvm", "mesa": {"vulkan", "gl"}, "vulkan_device", "gl_platform"}
 inline nlohmann::ordered_json json_tools(const ToolVersions& t) {
   return {{"glslang", t.glslang},
           {"spirv_tools", t.spirv_tools},
           {"spirv_cross", t.spirv_cross},
           {"llvm", t.llvm},
           {"mesa", {{"vulkan", t.vulkan_driver}, {"gl", t.gl_driver}}},
-          {"vulkan_device", t.vulkan_device}};
+          {"vulkan_device", t.vulkan_device},
+          {"gl_platform", t.gl_platform}};
 }
 
 }  // namespace shaderbed

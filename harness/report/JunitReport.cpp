@@ -124,6 +124,7 @@ std::string to_junit(const RunReport& report) {
   const std::pair<const char*, const std::string*> properties[] = {
       {"glslang", &t.glslang},         {"spirv_tools", &t.spirv_tools},     {"spirv_cross", &t.spirv_cross},
       {"llvm", &t.llvm},               {"mesa_vulkan", &t.vulkan_driver},   {"mesa_gl", &t.gl_driver},
+      {"gl_platform", &t.gl_platform},
       {"shard", &report.shard},        {"out_dir", &report.out_dir}};
 
   std::string x = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";

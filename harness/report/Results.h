@@ -222,6 +222,9 @@ struct CellResult {
 struct ToolVersions {
   std::string glslang, spirv_tools, spirv_cross, vulkan_driver, gl_driver, llvm;
   std::string vulkan_device;   // the device the Vulkan cells ran on (--vulkan-device), with its type
+  // How the GL cells reached GL (--gl-platform, --gl-device): "osmesa", "egl surfaceless",
+  // "egl device 0: ..."; "" when no GL cell ran.
+  std::string gl_platform;
 };
 
 // The caches a run used, and how the compile cache answered (docs/caches.md). Caches

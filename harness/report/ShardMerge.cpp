@@ -30,7 +30,7 @@ std::string join_tools(ToolVersions& merged, const ToolVersions& part) {
       {"glslang", &ToolVersions::glslang},           {"SPIRV-Tools", &ToolVersions::spirv_tools},
       {"SPIRV-Cross", &ToolVersions::spirv_cross},   {"the Vulkan driver", &ToolVersions::vulkan_driver},
       {"the GL driver", &ToolVersions::gl_driver},   {"LLVM", &ToolVersions::llvm},
-      {"the Vulkan device", &ToolVersions::vulkan_device}};
+      {"the Vulkan device", &ToolVersions::vulkan_device}, {"the GL platform", &ToolVersions::gl_platform}};
   for (const auto& [name, field] : tools) {
     std::string& have = merged.*field;
     const std::string& other = part.*field;

@@ -124,6 +124,9 @@ std::string toolchain_difference(const ToolVersions& stored, const ToolVersions&
   differ("GL driver", stored.gl_driver, now.gl_driver);
   differ("LLVM", stored.llvm, now.llvm);
   differ("Vulkan device", stored.vulkan_device, now.vulkan_device);
+  // Sets stored before the GL platform was recorded were all drawn on OSMesa.
+  differ("GL platform", stored.gl_platform.empty() && !stored.gl_driver.empty() ? "osmesa" : stored.gl_platform,
+         now.gl_platform);
   return out;
 }
 

@@ -30,7 +30,7 @@ const std::pair<const char*, std::string ToolVersions::*> kToolFields[] = {
     {"glslang", &ToolVersions::glslang},         {"spirv_tools", &ToolVersions::spirv_tools},
     {"spirv_cross", &ToolVersions::spirv_cross}, {"vulkan_driver", &ToolVersions::vulkan_driver},
     {"gl_driver", &ToolVersions::gl_driver},     {"llvm", &ToolVersions::llvm},
-    {"vulkan_device", &ToolVersions::vulkan_device}};
+    {"vulkan_device", &ToolVersions::vulkan_device}, {"gl_platform", &ToolVersions::gl_platform}};
 
 // An image's file must stay inside the folder: relative, and without a `..` component
 // (an absolute path or `../` would make --against read whatever file the manifest names).

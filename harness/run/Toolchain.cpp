@@ -19,11 +19,12 @@ std::string llvm_version(const std::string& driver) {
 
 ToolVersions toolchain(const std::vector<BackendSlot>& backends) {
   const CompilerVersions versions = compiler_versions();
-  ToolVersions tools{versions.glslang, versions.spirv_tools, versions.spirv_cross, "", "", "", ""};
+  ToolVersions tools{versions.glslang, versions.spirv_tools, versions.spirv_cross, "", "", "", "", ""};
   for (const BackendSlot& b : backends) {
     const std::string v = b.backend ? (*b.backend)->driver_version() : "unavailable: " + b.backend.error().message;
     (b.name == "vulkan" ? tools.vulkan_driver : tools.gl_driver) = v;
     if (b.name == "vulkan" && b.backend) tools.vulkan_device = (*b.backend)->device_name();
+    if (b.name == "gl" && b.backend) tools.gl_platform = (*b.backend)->platform();
     if (tools.llvm.empty()) tools.llvm = llvm_version(v);
   }
   return tools;
@@ -39,9 +40,10 @@ std::string version_text(const ToolVersions& t) {
       "  Vulkan driver  {}\n"
       "  Vulkan device  {}\n"
       "  GL driver      {}\n"
+      "  GL platform    {}\n"
       "  LLVM           {}\n",
       SHADERBED_VERSION, or_none(t.glslang), or_none(t.spirv_tools), or_none(t.spirv_cross), or_none(t.vulkan_driver),
-      or_none(t.vulkan_device), or_none(t.gl_driver), or_none(t.llvm));
+      or_none(t.vulkan_device), or_none(t.gl_driver), or_none(t.gl_platform), or_none(t.llvm));
 }
 
 }  // namespace shaderbed

@@ -59,19 +59,23 @@ void to_json(json& j, const ProcessSettings& p) {
   j = {{"cache_root", p.caches.root},
        {"driver_cache", p.caches.driver},
        {"compile_cache", p.caches.compile},
-       {"vulkan_device", p.vulkan_device}};
+       {"vulkan_device", p.vulkan_device},
+       {"gl_platform", p.gl_platform.platform},
+       {"gl_device", p.gl_platform.device}};
 }
 void from_json(const json& j, ProcessSettings& p) {
   j.at("cache_root").get_to(p.caches.root);
   j.at("driver_cache").get_to(p.caches.driver);
   j.at("compile_cache").get_to(p.caches.compile);
   j.at("vulkan_device").get_to(p.vulkan_device);
+  j.at("gl_platform").get_to(p.gl_platform.platform);
+  j.at("gl_device").get_to(p.gl_platform.device);
 }
 
 WorkerOptions worker_options(const RunOptions& o) {
   // Decided here, before any worker starts, so a full cache folder's note is printed once.
   cache_root_writable();
-  return {o.select, cell_settings(o), {cache_settings(), chosen_vulkan_device()}};
+  return {o.select, cell_settings(o), {cache_settings(), chosen_vulkan_device(), chosen_gl_platform()}};
 }
 
 namespace {
@@ -149,6 +153,7 @@ Result<WorkerOptions> decode_worker_options(std::string_view line) {
 void apply_process_settings(const ProcessSettings& settings) {
   set_cache_settings(settings.caches);
   choose_vulkan_device(settings.vulkan_device);
+  choose_gl_platform(settings.gl_platform);
 }
 
 }  // namespace shaderbed

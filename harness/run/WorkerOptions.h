@@ -6,6 +6,7 @@
 #include <string>
 #include <string_view>
 
+#include "backends/Backend.h"
 #include "core/CacheSettings.h"
 #include "core/Error.h"
 #include "run/RunOptions.h"
@@ -15,9 +16,10 @@ namespace shaderbed {
 struct ProcessSettings {
   CacheSettings caches;
   std::string vulkan_device;   // --vulkan-device ("" = lavapipe)
+  GlPlatformChoice gl_platform;   // --gl-platform, --gl-device
   bool operator==(const ProcessSettings& o) const {
     return caches.root == o.caches.root && caches.driver == o.caches.driver && caches.compile == o.caches.compile &&
-           vulkan_device == o.vulkan_device;
+           vulkan_device == o.vulkan_device && gl_platform == o.gl_platform;
   }
 };
 

@@ -54,7 +54,7 @@ struct PendingNir {
 
 // Each reading is a child process that mostly waits on LLVM: run as many at once as
 // there are cores. A backend whose method gives nothing leaves its note, not zeros.
-void read_driver_counts(const std::vector<PendingNir>& programs, StatsReport& report,
+void read_driver_counts(const std::vector<PendingNir>& programs, const StatsOptions& options, StatsReport& report,
                         const std::function<void(const std::string&)>& step_done) {
   struct Job {
     const PendingNir* pending;
@@ -68,7 +68,9 @@ void read_driver_counts(const std::vector<PendingNir>& programs, StatsReport& re
     std::vector<std::future<Result<NirProgramCounts>>> running;
     for (size_t j = start; j < std::min(jobs.size(), start + width); ++j)
       running.push_back(std::async(std::launch::async, [&, j] {
-        return nir_counts(jobs[j].pending->program, NirRequest{.backend = jobs[j].backend});
+        return nir_counts(jobs[j].pending->program, NirRequest{.backend = jobs[j].backend,
+                                                               .gl_platform = options.gl_platform,
+                                                               .gl_device = options.gl_device});
       }));
     for (size_t j = start; j < std::min(jobs.size(), start + width); ++j) {
       auto counts = running[j - start].get();
@@ -157,7 +159,7 @@ Result<StatsReport> collect_stats(const StatsOptions& o) {
     if (!program && o.nir) done += 2;   // nothing for the driver to read: its two steps are done
     step_done(fmt::format("{}/{}/{}", c->name, variant.name, to_string(language)));
   }
-  read_driver_counts(programs, report, step_done);
+  read_driver_counts(programs, o, report, step_done);
   if (auto ok = check_names(o.variants, variant_names, "variant"); !ok) return std::unexpected(ok.error());
   return report;
 }

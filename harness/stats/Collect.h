@@ -13,6 +13,10 @@ struct StatsOptions {
   std::string cases_dir;
   std::vector<std::string> cases, variants, languages;   // empty = all
   bool nir = true;   // also read the driver's NIR (one child process per program and backend)
+  // How the NIR helper reaches GL: --gl-platform and --gl-device (backends/Backend.h's
+  // GlPlatformChoice, spelled out: stats sits below the backends).
+  std::string gl_platform = "osmesa";
+  std::string gl_device;
   // Called after each step (a program compiled and counted; one backend's NIR read) from
   // the calling thread: `what` names it ("phong/pixel/hlsl", "phong/pixel/hlsl NIR vulkan").
   std::function<void(size_t done, size_t total, const std::string& what)> on_step;

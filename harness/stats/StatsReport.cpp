@@ -267,7 +267,7 @@ std::string compact_table(const TableRows& t) {
   out += "\n" + folded("spirv = SPIR-V instructions in function bodies as compiled (Vulkan target), of which ar "
                        "arithmetic, ex GLSL.std.450 calls, tx texture, cf control flow; -O / -Os: totals after spirv-opt; "
                        "glsl: lines of SPIRV-Cross GLSL; nir vk / nir gl: NIR ALU instructions Mesa compiled on lavapipe / "
-                       "OSMesa (- when not read: see the JSON's nir.note). --wide shows every class count.",
+                       "the --gl-platform (- when not read: see the JSON's nir.note). --wide shows every class count.",
                        kCompactTableWidth, "");
   return out + folded(kBookLegend, kCompactTableWidth, "");
 }
@@ -319,8 +319,8 @@ std::string wide_table(const TableRows& t) {
   }
   out += "\ntot = SPIR-V instructions in function bodies as compiled (Vulkan target); ar arithmetic, ex GLSL.std.450 "
          "calls, tx texture, cf control flow, mem memory, cv conversion, ot other; -O / -Os: totals after spirv-opt; "
-         "glsl: lines of SPIRV-Cross GLSL; nir vk / nir gl: NIR ALU instructions Mesa compiled on lavapipe / OSMesa "
-         "(- when not read: see the JSON's nir.note).\n";
+         "glsl: lines of SPIRV-Cross GLSL; nir vk / nir gl: NIR ALU instructions Mesa compiled on lavapipe / the "
+         "--gl-platform (- when not read: see the JSON's nir.note).\n";
   return out + kBookLegend + "\n";
 }
 

@@ -22,7 +22,7 @@ struct NirCounts {
 };
 struct NirStats {
   std::optional<NirCounts> vulkan;   // lavapipe
-  std::optional<NirCounts> gl;       // OSMesa
+  std::optional<NirCounts> gl;       // OSMesa or EGL (--gl-platform)
   std::string note;                  // why a reading is missing with this Mesa, if it is
 };
 
@@ -58,7 +58,7 @@ enum class TableForm {
 };
 // Aligned table of the counts with a legend, then the GLSL.std.450 calls after -O.
 // compact: SPIR-V total and its arithmetic/extended/texture/control parts, the totals after
-// -O and -Os, the SPIRV-Cross GLSL lines, the NIR ALU counts on lavapipe and OSMesa and the
+// -O and -Os, the SPIRV-Cross GLSL lines, the NIR ALU counts on lavapipe and OSMesa/EGL and the
 // book's count; wide: also memory/conversion/other and the -O class counts.
 std::string format_table(const StatsReport&, TableForm form = TableForm::compact);
 // The compact table's promise: no line of it is wider than this.

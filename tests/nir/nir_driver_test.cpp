@@ -69,6 +69,47 @@ INSTANTIATE_TEST_SUITE_P(Backends, NirDriver,
                            return std::string(to_string(info.param.backend)) + "_" + to_string(info.param.path);
                          });
 
+// MESA_GLSL=dump is Mesa's GLSL linker printing, whatever the platform: EGL gives the NIR
+// OSMesa gives, on every GL path, and says where it read it.
+TEST(NirDriverPlatforms, EglGivesTheCountsOsMesaGives) {
+  auto program = program_from("sample_egl", kSample);
+  ASSERT_TRUE(program) << program.error().to_string();
+  for (ShaderPath path : {ShaderPath::spirv, ShaderPath::native_glsl, ShaderPath::cross_glsl}) {
+    auto osmesa = nir_counts(*program, NirRequest{.backend = NirBackend::gl, .path = path});
+    auto egl = nir_counts(*program, NirRequest{.backend = NirBackend::gl, .path = path, .gl_platform = "egl"});
+    ASSERT_TRUE(osmesa) << osmesa.error().to_string();
+    ASSERT_TRUE(egl) << to_string(path) << ": " << egl.error().to_string();
+    EXPECT_EQ(egl->method, "glsl_dump on EGL surfaceless llvmpipe");
+    for (Stage stage : {Stage::vertex, Stage::fragment}) {
+      EXPECT_EQ(egl->operator[](stage).alu, osmesa->operator[](stage).alu) << to_string(path);
+      EXPECT_EQ(egl->operator[](stage).tex, osmesa->operator[](stage).tex) << to_string(path);
+      EXPECT_EQ(egl->operator[](stage).control, osmesa->operator[](stage).control) << to_string(path);
+    }
+  }
+}
+
+// The helper draws on the platform it is given: a device that does not exist is its error.
+TEST(NirDriverPlatforms, TheHelperDrawsOnThePlatformItIsGiven) {
+  auto program = program_from("multiply_device", kMultiply);
+  ASSERT_TRUE(program) << program.error().to_string();
+  auto counts = nir_counts(
+      *program, NirRequest{.backend = NirBackend::gl, .gl_platform = "egl", .gl_device = "no-such-gpu"});
+  ASSERT_FALSE(counts);
+  EXPECT_NE(counts.error().message.find("no-such-gpu matches none"), std::string::npos) << counts.error().message;
+}
+
+// GALLIUM_TRACE, which OSMesa hangs on, works on EGL (measured on Mesa 22.3.6).
+TEST(NirDriverPlatforms, GalliumTraceWorksOnEgl) {
+  auto program = program_from("sample_trace", kSample);
+  ASSERT_TRUE(program) << program.error().to_string();
+  auto counts = nir_counts(*program, NirRequest{.backend = NirBackend::gl, .method = NirMethod::gallium_trace,
+                                                .gl_platform = "egl"});
+  ASSERT_TRUE(counts) << counts.error().to_string();
+  EXPECT_EQ(counts->method, "gallium_trace on EGL surfaceless llvmpipe");
+  EXPECT_EQ(counts->fragment.tex, 1);
+  EXPECT_GE(counts->vertex.alu + counts->vertex.intrinsics, 1);
+}
+
 TEST(NirDriverMethods, AMethodThatDoesNotWorkHereIsAnErrorNamingIt) {
   auto program = program_from("multiply", kMultiply);
   ASSERT_TRUE(program);

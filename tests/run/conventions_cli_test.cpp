@@ -25,7 +25,8 @@ TEST(Conventions, VersionNamesShaderbedAndTheToolchain) {
   const auto [status, out] = shaderbed_cli("--version");
   ASSERT_EQ(status, 0) << out;
   EXPECT_TRUE(std::regex_search(out, std::regex(R"(^shaderbed \d+\.\d+\.\d+)"))) << out;
-  for (const char* tool : {"glslang", "SPIRV-Tools", "SPIRV-Cross", "Vulkan driver", "Vulkan device", "GL driver", "LLVM"})
+  for (const char* tool : {"glslang", "SPIRV-Tools", "SPIRV-Cross", "Vulkan driver", "Vulkan device", "GL driver",
+                           "GL platform", "LLVM"})
     EXPECT_NE(out.find(tool), std::string::npos) << tool << " missing from:\n" << out;
   // The drivers really started: Mesa's and LLVM's versions are read from them.
   EXPECT_TRUE(std::regex_search(out, std::regex(R"(Mesa \d+\.\d+)"))) << out;

@@ -26,7 +26,9 @@ WorkerOptions unusual_options() {
             .unused_binding_warnings = false,
             .twin = "half",
             .keep_images = "all"};
-  o.process = {.caches = {.root = "/cache", .driver = false, .compile = false}, .vulkan_device = "1"};
+  o.process = {.caches = {.root = "/cache", .driver = false, .compile = false},
+               .vulkan_device = "1",
+               .gl_platform = {.platform = "egl", .device = "renderD129"}};
   return o;
 }
 
@@ -60,10 +62,12 @@ TEST(WorkerOptions, DefaultsRoundTrip) {
 TEST(WorkerOptions, DecodingChangesNoProcessState) {
   const CacheSettings before = cache_settings();
   const std::string device = chosen_vulkan_device();
+  const GlPlatformChoice gl_platform = chosen_gl_platform();
   ASSERT_TRUE(decode_worker_options(encode_worker_options(unusual_options())));
   EXPECT_EQ(cache_settings().root, before.root);
   EXPECT_EQ(cache_settings().driver, before.driver);
   EXPECT_EQ(chosen_vulkan_device(), device);
+  EXPECT_EQ(chosen_gl_platform(), gl_platform);
 }
 
 TEST(WorkerOptions, WorkersGetOnlyWhatCellsNeed) {

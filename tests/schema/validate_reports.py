@@ -4,7 +4,8 @@
 `run --junit` and `merge --junit` against the junit-10 schema CI systems check
 (tests/schema/junit-10.xsd, with xmllint). The runs: a differential case whose buggy port
 fails, a case whose shader does not compile (an error cell), and two shards of a model case
-with its twin, and their merge. Each is one shape on one backend at 16 px.
+with its twin, and their merge, and a GL cell drawn on an EGL device (its tools.gl_platform
+must say so). Each is one shape on one backend at 16 px.
 
 Also: a failing cell's JUnit names its images as [[ATTACHMENT|path]] lines (GitLab and
 Jenkins show them) and the paths exist relative to the directory the run started in; the
@@ -65,6 +66,8 @@ def main():
         "error": ["run", "--case", os.path.join(user, "broken.toml")],
         "shard1": ["run", "--case", "lambert", "--variant", "vertex,pixel", "--lang", "glsl", "--twin", "float", "--shard", "1/2"],
         "shard2": ["run", "--case", "lambert", "--variant", "vertex,pixel", "--lang", "glsl", "--twin", "float", "--shard", "2/2"],
+        # GL on an EGL device (docs/gl-platforms.md): tools.gl_platform in its longest form.
+        "egl": ["run", "--case", "lambert", "--variant", "pixel", "--lang", "glsl", "--backend", "gl", "--gl-device", "0"],
     }
     statuses = {}
     for name, args in runs.items():
@@ -90,6 +93,10 @@ def main():
     for name, wanted in {"merged": "pass", "differential": "fail", "error": "error"}.items():
         if wanted not in statuses[name]:
             problems.append(f"{name}: expected a '{wanted}' cell, found {statuses[name]}")
+    with open(os.path.join(work, "egl.json")) as f:
+        platform = json.load(f)["tools"]["gl_platform"]
+    if not platform.startswith("egl device 0: "):
+        problems.append(f"egl.json: tools.gl_platform is {platform!r}, expected 'egl device 0: ...'")
     with open(os.path.join(work, "error.json")) as f:
         cache = json.load(f).get("cache", {})
     if cache.get("compile", {}).get("dir") != "~/.cache/shaderbed/compile":

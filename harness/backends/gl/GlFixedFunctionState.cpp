@@ -57,7 +57,7 @@ Result<LegacyGlFunctions> load_legacy_gl_functions(GlProcLoader loader) {
   LegacyGlFunctions gl;
 #define SHADERBED_GL_LOAD(type, member, name)                                            \
   gl.member = reinterpret_cast<std::add_pointer_t<type>>(loader(name));                  \
-  if (gl.member == nullptr) return fail(ErrorStage::gl, std::string("OSMesa does not provide ") + name);
+  if (gl.member == nullptr) return fail(ErrorStage::gl, std::string("the GL context does not provide ") + name);
   SHADERBED_LEGACY_GL_FUNCTIONS(SHADERBED_GL_LOAD)
 #undef SHADERBED_GL_LOAD
   return gl;

@@ -38,7 +38,7 @@ namespace shaderbed::gl {
   X(void(GLint, GLenum, GLsizei, const void*), TexCoordPointer, "glTexCoordPointer") \
   X(void(GLenum), ClientActiveTexture, "glClientActiveTexture")
 
-// The legacy entry points, loaded through OSMesaGetProcAddress like the core ones.
+// The legacy entry points, loaded through the context's platform like the core ones.
 struct LegacyGlFunctions {
 #define SHADERBED_DECLARE(type, member, name) std::add_pointer_t<type> member = nullptr;
   SHADERBED_LEGACY_GL_FUNCTIONS(SHADERBED_DECLARE)

@@ -1,7 +1,8 @@
 #pragma once
-// The GL entry points the OSMesa renderer uses, loaded by name through
-// OSMesaGetProcAddress. libepoxy and GLAD-style global loaders are avoided on purpose:
-// libepoxy aborts under OSMesa, and a plain table keeps every call explicit.
+// The GL entry points the GL renderer uses, loaded by name through the context's platform
+// (OSMesaGetProcAddress, eglGetProcAddress). libepoxy and GLAD-style global loaders are
+// avoided on purpose: libepoxy aborts under OSMesa, and a plain table keeps every call
+// explicit.
 #include <GL/glcorearb.h>
 
 #include "core/Error.h"
@@ -127,14 +128,15 @@ struct GlFunctions {
 #undef SHADERBED_GL_MEMBER
 };
 
-// Looks a GL function up by name (OSMesaGetProcAddress behind a plain pointer type so
-// this header does not pull in osmesa.h, whose GL/gl.h clashes with glcorearb.h).
+// Looks a GL function up by name (OSMesaGetProcAddress or eglGetProcAddress behind a
+// plain pointer type so this header does not pull in osmesa.h, whose GL/gl.h clashes with
+// glcorearb.h).
 using GlProc = void (*)();
 using GlProcLoader = GlProc (*)(const char* name);
 
 // Fills the table. A null entry is an error naming the function. Mesa's loader hands
 // out a no-op stub for names it does not know, so callers must still check the GL
-// version / extension before relying on an entry (see OsMesaContext).
+// version / extension before relying on an entry (see GlRenderer::create).
 Result<GlFunctions> load_gl_functions(GlProcLoader loader);
 
 }  // namespace shaderbed::gl

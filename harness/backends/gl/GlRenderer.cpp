@@ -8,6 +8,7 @@
 #include "backends/MesaEnvironment.h"
 #include "backends/gl/GlError.h"
 #include "backends/gl/GlMeshUpload.h"
+#include "backends/gl/GlPlatform.h"
 #include "backends/gl/GlProgramBuilder.h"
 #include "backends/gl/GlProgramInterface.h"
 #include "backends/gl/GlRenderState.h"
@@ -57,29 +58,32 @@ bool has_extension(const GlFunctions& gl, std::string_view wanted) {
 
 }  // namespace
 
-GlRenderer::GlRenderer(OsMesaContext context, GlFunctions functions)
-    : context_(std::move(context)), gl_(functions) {}
+GlRenderer::GlRenderer(std::unique_ptr<GlContext> context, const GlPlatformChoice& platform, GlFunctions functions)
+    : context_(std::move(context)), platform_choice_(platform), gl_(functions) {}
 
 GlRenderer::~GlRenderer() {
   // The target's GL objects are deleted in the member destructors, which need the
   // context current on this thread.
-  (void)context_.make_current();
+  (void)context_->make_current();
 }
 
-Result<std::unique_ptr<GlRenderer>> GlRenderer::create() { return create(OsMesaContext::Profile::core); }
-
-Result<std::unique_ptr<GlRenderer>> GlRenderer::create_compatibility() {
-  return create(OsMesaContext::Profile::compatibility);
+Result<std::unique_ptr<GlRenderer>> GlRenderer::create(const GlPlatformChoice& platform) {
+  return create(platform, GlContext::Profile::core);
 }
 
-Result<std::unique_ptr<GlRenderer>> GlRenderer::create(OsMesaContext::Profile profile) {
-  auto context = OsMesaContext::create(4, 5, profile);
+Result<std::unique_ptr<GlRenderer>> GlRenderer::create_compatibility(const GlPlatformChoice& platform) {
+  return create(platform, GlContext::Profile::compatibility);
+}
+
+Result<std::unique_ptr<GlRenderer>> GlRenderer::create(const GlPlatformChoice& platform, GlContext::Profile profile) {
+  auto context = create_gl_context(platform, 4, 5, profile);
   if (!context) return std::unexpected(context.error());
-  auto functions = load_gl_functions(OsMesaContext::proc_loader());
+  const GlProcLoader loader = (*context)->proc_loader();
+  auto functions = load_gl_functions(loader);
   if (!functions) return std::unexpected(functions.error());
-  std::unique_ptr<GlRenderer> renderer(new GlRenderer(std::move(*context), *functions));
-  if (profile == OsMesaContext::Profile::compatibility) {
-    auto legacy = load_legacy_gl_functions(OsMesaContext::proc_loader());
+  std::unique_ptr<GlRenderer> renderer(new GlRenderer(std::move(*context), platform, *functions));
+  if (profile == GlContext::Profile::compatibility) {
+    auto legacy = load_legacy_gl_functions(loader);
     if (!legacy) return std::unexpected(legacy.error());
     renderer->legacy_ = *legacy;
   }
@@ -91,8 +95,8 @@ Result<std::unique_ptr<GlRenderer>> GlRenderer::create(OsMesaContext::Profile pr
   // glClipControl and the program interface query are core in 4.5; Mesa's loader
   // returns no-op stubs for what a context lacks, so the version is the real check.
   if (major * 10 + minor < 45)
-    return std::unexpected(gl_error("OSMesa gave a " + std::to_string(major) + "." + std::to_string(minor) +
-                                    " context; the GL backend needs 4.5 core"));
+    return std::unexpected(gl_error(renderer->context_->platform() + " gave a " + std::to_string(major) + "." +
+                                    std::to_string(minor) + " context; the GL backend needs 4.5 core"));
   renderer->device_name_ = gl_string(gl, GL_RENDERER);
   renderer->driver_version_ = renderer->device_name_ + ", OpenGL " + gl_string(gl, GL_VERSION);
   renderer->has_gl_spirv_ = has_extension(gl, "GL_ARB_gl_spirv");
@@ -118,7 +122,7 @@ Result<RenderOutput> GlRenderer::render(const DrawJob& job) {
 
 Result<RenderOutput> GlRenderer::render_compatibility(const DrawJob& job) {
   if (!compatibility_) {
-    auto made = create_compatibility();
+    auto made = create_compatibility(platform_choice_);
     // No compatibility context here: the path does not apply, it has not failed.
     if (!made)
       return std::unexpected(Error(skip(ErrorStage::gl, "GL-era GLSL needs a compatibility-profile context: " +
@@ -128,7 +132,7 @@ Result<RenderOutput> GlRenderer::render_compatibility(const DrawJob& job) {
     compatibility_ = std::move(*made);
   }
   auto output = compatibility_->render(job);
-  if (auto current = context_.make_current(); !current) return std::unexpected(current.error());
+  if (auto current = context_->make_current(); !current) return std::unexpected(current.error());
   return output;
 }
 
@@ -212,7 +216,7 @@ Result<void> GlRenderer::time_draws(const DrawJob& job, GLsizei index_count, Ren
 }
 
 Result<RenderOutput> GlRenderer::render_on_path(const DrawJob& job) {
-  if (auto current = context_.make_current(); !current) return std::unexpected(current.error());
+  if (auto current = context_->make_current(); !current) return std::unexpected(current.error());
   drain_gl_errors(gl_);  // a stale flag must not be blamed on this draw
   if (const auto offered = paths(job.program.language); std::ranges::find(offered, job.path) == offered.end())
     return std::unexpected(gl_error(std::string("the GL backend does not take ") + to_string(job.program.language) +

@@ -58,7 +58,9 @@ struct OsMesaContext::Handle {
 OsMesaContext::OsMesaContext(std::unique_ptr<Handle> handle) : handle_(std::move(handle)) {}
 OsMesaContext::OsMesaContext(OsMesaContext&&) noexcept = default;
 OsMesaContext& OsMesaContext::operator=(OsMesaContext&&) noexcept = default;
-OsMesaContext::~OsMesaContext() = default;
+OsMesaContext::~OsMesaContext() {
+  if (last_made_current() == this) last_made_current() = nullptr;
+}
 
 Result<OsMesaContext> OsMesaContext::create(int major, int minor, Profile profile) {
   const int attributes[] = {OSMESA_FORMAT,        OSMESA_RGBA,
@@ -84,10 +86,11 @@ Result<void> OsMesaContext::make_current() const {
   if (!handle_ || !handle_->context) return fail(ErrorStage::gl, "the OSMesa context was moved from");
   if (!osmesa().make_current(handle_->context, handle_->dummy_buffer.data(), GL_UNSIGNED_BYTE, 4, 4))
     return fail(ErrorStage::gl, "OSMesaMakeCurrent failed");
+  last_made_current() = this;
   return {};
 }
 
-GlProcLoader OsMesaContext::proc_loader() {
+GlProcLoader OsMesaContext::proc_loader() const {
   return [](const char* name) -> GlProc { return reinterpret_cast<GlProc>(osmesa().get_proc_address(name)); };
 }
 

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "backends/DeviceChoice.h"
 #include "backends/MesaEnvironment.h"
 #include "backends/vulkan/VulkanResult.h"
 #include "core/LeakReportPins.h"
@@ -81,25 +82,11 @@ std::string driver_of(VkPhysicalDevice device) {
   return std::string(driver.driverName) + " / " + driver.driverInfo;
 }
 
-std::string lower(std::string s) {
-  for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
-
-// The device --vulkan-device names among `names` (in enumeration order): an index, or a
-// unique case-insensitive part of a name.
+// The device --vulkan-device names among `names` (in enumeration order).
 Result<uint32_t> match_device(const std::vector<std::string>& names, const std::string& choice) {
-  std::string seen;
-  std::vector<uint32_t> matches;
-  const bool is_index = !choice.empty() && std::all_of(choice.begin(), choice.end(), ::isdigit);
-  for (uint32_t i = 0; i < names.size(); ++i) {
-    seen += std::string(seen.empty() ? "" : ", ") + std::to_string(i) + ": " + names[i];
-    if (is_index ? std::to_string(i) == choice : lower(names[i]).find(lower(choice)) != std::string::npos)
-      matches.push_back(i);
-  }
-  if (matches.size() == 1) return matches.front();
-  return std::unexpected(backend_error("--vulkan-device " + choice + (matches.empty() ? " matches none" : " matches several") +
-                                       " of the Vulkan devices [" + seen + "] ('shaderbed devices' lists them)"));
+  auto index = shaderbed::match_device(names, choice, "--vulkan-device", "Vulkan devices");
+  if (!index) return std::unexpected(backend_error(index.error().message));
+  return uint32_t(*index);
 }
 
 std::string device_name_of(VkPhysicalDevice device) {

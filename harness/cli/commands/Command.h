@@ -41,6 +41,9 @@ Command add_completion_command(CLI::App& app);    // completion bash: a completi
 void add_cache_options(CLI::App& app);
 // --vulkan-device on the root app, also accepted after a subcommand (DevicesCommand.cpp).
 void add_vulkan_device_option(CLI::App& app);
+// --gl-platform osmesa|egl and --gl-device on the root app, also accepted after a
+// subcommand (DevicesCommand.cpp).
+void add_gl_platform_options(CLI::App& app);
 // --version: shaderbed's version and the toolchain fingerprint, drivers started to read it.
 void add_version_flag(CLI::App& app);
 

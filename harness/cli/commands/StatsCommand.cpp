@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "backends/Backend.h"
 #include "cli/commands/Command.h"
 #include "cli/commands/JsonOutput.h"
 #include "compile/IsolatedCompile.h"
@@ -84,6 +85,8 @@ Command add_stats_command(CLI::App& app) {
               args->options.on_step = [&progress](size_t done, size_t total, const std::string& what) {
                 progress.update(done, total, "steps", what);
               };
+              args->options.gl_platform = chosen_gl_platform().platform;
+              args->options.gl_device = chosen_gl_platform().device;
               report = stats::collect_stats(args->options);
             }
             if (!report) {

@@ -39,6 +39,14 @@ std::vector<std::string> child_environment(NirMethod method, const fs::path& tra
 
 const char* language_name(Language l) { return to_string(l); }
 
+// "lavapipe", "OSMesa llvmpipe", "EGL surfaceless llvmpipe", "EGL device 1".
+std::string driver_name(const NirRequest& request) {
+  if (request.backend == NirBackend::vulkan) return "lavapipe";
+  if (request.gl_platform == "osmesa") return "OSMesa llvmpipe";
+  if (request.gl_device.empty()) return "EGL surfaceless llvmpipe";
+  return "EGL device " + request.gl_device;
+}
+
 }  // namespace
 
 const char* to_string(NirBackend b) { return b == NirBackend::vulkan ? "vulkan" : "gl"; }
@@ -64,15 +72,15 @@ Result<NirProgramCounts> nir_counts(const CompiledProgram& program, const NirReq
   NirRequest request = given;
   if (request.method == NirMethod::automatic)
     request.method = request.backend == NirBackend::vulkan ? NirMethod::gallium_trace : NirMethod::glsl_dump;
-  const std::string what = std::string("counts unavailable: ") + to_string(request.method) + " on " +
-                           (request.backend == NirBackend::vulkan ? "lavapipe" : "OSMesa llvmpipe");
+  const std::string driver = driver_name(request);
+  const std::string what = std::string("counts unavailable: ") + to_string(request.method) + " on " + driver;
   auto unavailable = [&](const std::string& why) { return fail(ErrorStage::nir, what + ": " + why); };
 
   if (request.backend == NirBackend::vulkan && request.method == NirMethod::glsl_dump)
     return unavailable("MESA_GLSL=dump is a GL (GLSL compiler) setting; Vulkan has no GLSL linker");
-  if (request.backend == NirBackend::gl && request.method == NirMethod::gallium_trace)
+  if (request.backend == NirBackend::gl && request.gl_platform == "osmesa" && request.method == NirMethod::gallium_trace)
     return unavailable("with GALLIUM_TRACE set, OSMesa never finishes the draw on Mesa 22.3.6 (measured: the "
-                       "trace stops after context_create and the process hangs); use glsl_dump");
+                       "trace stops after context_create and the process hangs); use glsl_dump, or --gl-platform egl");
   if (request.backend == NirBackend::vulkan && request.path != ShaderPath::spirv)
     return unavailable("Vulkan takes SPIR-V only");
   for (const ShaderModule* m : {&program.vertex, &program.fragment})
@@ -91,7 +99,9 @@ Result<NirProgramCounts> nir_counts(const CompiledProgram& program, const NirReq
                                          "--vertex", program.vertex.source_file,
                                          "--fragment", program.fragment.source_file,
                                          "--vertex-entry", program.vertex.entry_point,
-                                         "--fragment-entry", program.fragment.entry_point};
+                                         "--fragment-entry", program.fragment.entry_point,
+                                         "--gl-platform", request.gl_platform,
+                                         "--gl-device", request.gl_device};
   auto exit = run_child(args, dir->path(), ErrorStage::nir, child_environment(request.method, trace));
   if (!exit) return unavailable("cannot run the helper '" + helper + "': " + exit.error().message);
   const std::string& stderr_text = exit->stderr_text;
@@ -118,7 +128,7 @@ Result<NirProgramCounts> nir_counts(const CompiledProgram& program, const NirReq
   // driver makes while drawing (OSMesa's st prints one for glClear's
   // gl_CurrentAttribFrag2MESA) come after.
   NirProgramCounts result;
-  result.method = std::string(to_string(request.method)) + " on " + (request.backend == NirBackend::vulkan ? "lavapipe" : "OSMesa");
+  result.method = std::string(to_string(request.method)) + " on " + driver;
   for (Stage stage : {Stage::vertex, Stage::fragment}) {
     const NirShader* found = nullptr;
     for (const NirShader& s : shaders)

@@ -9,12 +9,14 @@
 // Methods (Mesa 22.3.6, Debian 12; see tests/nir and the report):
 //   gallium_trace  GALLIUM_TRACE=<file> GALLIUM_TRACE_NIR=<big>: the trace driver wraps the
 //                  gallium screen and writes the NIR handed to create_{vs,fs}_state.
-//                  lavapipe (Vulkan) and OSMesa (GL): the NIR llvmpipe compiles.
-//                  Works on lavapipe. On OSMesa the helper hangs with GALLIUM_TRACE set
-//                  (measured on 22.3.6), so it is refused with an error, not run.
+//                  lavapipe (Vulkan) and OSMesa or EGL (GL): the NIR llvmpipe compiles.
+//                  Works on lavapipe and on EGL. On OSMesa the helper hangs with
+//                  GALLIUM_TRACE set (measured on 22.3.6), so it is refused with an
+//                  error, not run.
 //   glsl_dump      MESA_GLSL=dump, shader cache disabled, on stderr (GL only): prints the
-//                  GLSL IR and then the NIR of each linked stage (all three GL paths).
-//   automatic      gallium_trace on Vulkan, glsl_dump on GL.
+//                  GLSL IR and then the NIR of each linked stage (all three GL paths), on
+//                  OSMesa and on EGL alike: it is Mesa's GL front end, not the platform's.
+//   automatic      gallium_trace on Vulkan, glsl_dump on GL (both platforms alike).
 #include <string>
 
 #include "pipeline/ShaderPath.h"
@@ -40,6 +42,8 @@ struct NirRequest {
   NirBackend backend = NirBackend::vulkan;
   ShaderPath path = ShaderPath::spirv;   // GL: spirv, native_glsl or cross_glsl; Vulkan: spirv
   NirMethod method = NirMethod::automatic;
+  std::string gl_platform = "osmesa";    // GL: --gl-platform and --gl-device for the helper
+  std::string gl_device;
   std::string helper;                    // the helper binary; empty: find it (see nir_dump_helper)
 };
 

@@ -44,7 +44,8 @@ class PlaceholderTextures final : public TextureResolver {
 int usage(const char* message) {
   std::fprintf(stderr,
                "shaderbed-nir-dump: %s\nusage: shaderbed-nir-dump --backend vulkan|gl --path spirv|glsl|cross "
-               "--lang glsl|hlsl|cg --vertex FILE --fragment FILE [--vertex-entry E] [--fragment-entry E]\n",
+               "--lang glsl|hlsl|cg --vertex FILE --fragment FILE [--vertex-entry E] [--fragment-entry E] "
+               "[--gl-platform osmesa|egl] [--gl-device INDEX|NAME]\n",
                message);
   return 2;
 }
@@ -84,6 +85,9 @@ int main(int argc, char** argv) {
     return 1;
   }
 
+  if (opt.contains("--gl-platform") || opt.contains("--gl-device"))
+    choose_gl_platform({.platform = opt.contains("--gl-platform") ? opt["--gl-platform"] : "osmesa",
+                        .device = opt.contains("--gl-device") ? opt["--gl-device"] : ""});
   auto backend = opt["--backend"] == "vulkan" ? make_vulkan_backend()
                : opt["--backend"] == "gl"     ? make_gl_backend()
                                               : Result<std::unique_ptr<Backend>>(fail(ErrorStage::nir, "unknown --backend"));
