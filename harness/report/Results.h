@@ -59,10 +59,10 @@ struct ErrorMapScale {
 
 struct CellArtefacts {                // paths under the run's --out folder ("" = not written)
   std::string render_exr, render_png, error_exr, error_png, reference_png;
-  ErrorMapScale error_scale;          // error_png's
   std::string vertex_spirv, fragment_spirv;            // disassembly (.spvasm)
   std::string vertex_cross_glsl, fragment_cross_glsl;  // SPIRV-Cross output
   std::string stored_exr;                              // run --save-images: the image later runs compare with
+  ErrorMapScale error_scale;                           // error_png's colours
 };
 
 // A median with its confidence interval (timing/MedianInterval).

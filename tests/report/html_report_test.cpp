@@ -89,8 +89,11 @@ TEST(HtmlReport, WritesOneSelfContainedPageAndCopiesSources) {
                              "wall 0.750 [0.688, 1.125], timestamp queries 0.625 [0.500, 0.875]",
                              "vertex 10, fragment 34"})
     EXPECT_NE(text.find(needle), std::string::npos) << needle;
-  EXPECT_EQ(html.find("</script", html.find("id=\"sb-cards\"")), html.find("</script>\n<script>\n", html.find("id=\"sb-cards\"")))
+  EXPECT_EQ(html.find("</script", html.find("id=\"sb-cards\"")),
+            html.find("</script>\n<script type=\"application/json\" id=\"sb-groups\">", html.find("id=\"sb-cards\"")))
       << "nothing in the card store closes its script element early";
+  EXPECT_EQ(html.find("</script", html.find("id=\"sb-groups\"")), html.find("</script>\n<script>\n", html.find("id=\"sb-groups\"")))
+      << "nor in the store of cards that several cells share";
   // The same report gives the same page.
   ASSERT_TRUE(write_html(report, (dir / "html2").string()));
   EXPECT_EQ(slurp(dir / "html2" / "index.html"), html);
