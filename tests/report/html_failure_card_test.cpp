@@ -27,6 +27,7 @@
 #include "ShellCommand.h"
 #include "SourceTree.h"
 #include "imageio/ImageIoModule.h"
+#include "report/HtmlReport.h"
 #include "report/Markup.h"
 
 namespace shaderbed {
@@ -276,6 +277,48 @@ TEST_F(HtmlFailureCard, FlickerSwapsTheRenderAndZoomMovesAllThreeImages) {
   EXPECT_NE(wheel.find("scale(2.5)"), std::string::npos) << wheel;
   EXPECT_NE(wheel, click);
   EXPECT_EQ(body_attr(dom, "data-t-reset"), "||");
+}
+
+}  // namespace
+}  // namespace shaderbed
+
+namespace shaderbed {
+namespace {
+
+// A card several cells share is kept out of the markup when it starts closed (known
+// failures do) and put into the page from its store when opened.
+TEST(HtmlSharedCard, ClosedCardIsFilledFromItsStoreWhenOpened) {
+  ASSERT_TRUE(fs::exists(chromium_path())) << chromium_path() << " is missing: run scripts/install-deps";
+  const fs::path dir = test::fresh_dir("shared_card");
+  RunReport report = test::sample_report(dir / "out");
+  const CellResult known = report.results[2];   // hlsl gl/cross sphere, a known failure
+  ASSERT_TRUE(known.known_failure);
+  for (const char* shape : {"cube", "cone"}) {
+    CellResult other = known;
+    other.shape = shape;
+    other.message = "interior max error 4.00e-02 > 2.00e-03";   // other numbers, the same failure
+    report.results.push_back(other);
+  }
+  ASSERT_TRUE(write_html(report, (dir / "html").string()));
+  const std::string html = slurp(dir / "html" / "index.html");
+  const size_t section = html.find("id=\"sec-known\"");
+  ASSERT_NE(section, std::string::npos);
+  EXPECT_NE(html.find("Known failures (3, in 1 card)", section), std::string::npos);
+  EXPECT_NE(html.find("data-count=\"3\" data-group=\"0\"", section), std::string::npos) << "closed, from the store";
+
+  std::string page = html;
+  page.insert(page.rfind("</body>"),
+              "<script>window.addEventListener('load', function () {"
+              "var d = document.querySelector('#sec-known details.fc'); d.open = true;"
+              "setTimeout(function () { var b = document.body;"
+              "b.setAttribute('data-t-first', d.querySelector('.card').firstElementChild.className);"
+              "b.setAttribute('data-t-listed', d.querySelectorAll('.group li').length); }, 50); });</script>\n");
+  std::ofstream(dir / "html" / "opened.html", std::ios::binary) << page;
+  Chromium chromium;
+  const std::string dom = chromium.dump_dom(file_url(dir / "html" / "opened.html"), "shared");
+  EXPECT_EQ(body_attr(dom, "data-t-first"), "trio") << chromium.last_command();
+  EXPECT_EQ(body_attr(dom, "data-t-listed"), "3");
+  fs::remove_all(dir);
 }
 
 }  // namespace
