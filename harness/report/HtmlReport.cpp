@@ -368,8 +368,8 @@ class Writer {
       if (line.empty() && !r.explanations.empty()) line = fmt::format("no convention explains it ({} tried)", r.explanations.size());
       if (line.empty()) line = withheld_explanation(r);
       if (!r.attribution.empty()) line += (line.empty() ? "" : "; ") + ("attribution: " + r.attribution);
-      h += fmt::format("<details class=\"why\"{}><summary><b>why</b>{}</summary>{}</details>", imgs.empty() ? " open" : "",
-                       line.empty() ? "" : ": " + escape(line), why);
+      h += fmt::format("<details class=\"why\"{}><summary><b>{}</b>{}</summary>{}</details>", imgs.empty() ? " open" : "",
+                       k == "pass" ? "message" : "why", line.empty() ? "" : ": " + escape(line), why);
     }
 
     // Every render of this case/variant/shape, for failing cells: which ones agree.
