@@ -298,6 +298,17 @@ class Writer {
   // why it failed (collapsed: the message once, the attribution, every convention fit),
   // the other renders of its shape and every number. `headline_shown`: the message's
   // first line is already on the card's summary line.
+  // reference | render | error (with its scale bar) of one cell.
+  std::string trio_images(const CellResult& r) const {
+    const CellArtefacts& a = r.artefacts;
+    const std::string reference_caption = r.reference.kind == "render"   ? "original (" + escape(r.reference.label) + ")"
+                                          : r.reference.kind == "images" ? std::string("stored image")
+                                                                         : std::string("reference");
+    const std::string scale = html_error_scale_bar(r);
+    return image(a.reference_png, "reference", reference_caption, "reference") + image(a.render_png, "render", "render", "render") +
+           image(a.error_png, "error map", scale.empty() ? "error" : "error " + scale, "error");
+  }
+
   std::string card(size_t index, const std::vector<const CellResult*>* group = nullptr, bool headline_shown = false) const {
     const CellResult& r = report_.results[index];
     const CellMetrics& m = r.metrics;
@@ -306,13 +317,7 @@ class Writer {
     const bool measured = r.status == CellStatus::pass || r.status == CellStatus::fail;
     std::string h = "<div class=\"card\">";
 
-    const std::string reference_caption = r.reference.kind == "render"   ? "original (" + escape(r.reference.label) + ")"
-                                          : r.reference.kind == "images" ? std::string("stored image")
-                                                                         : std::string("reference");
-    const std::string scale = html_error_scale_bar(r);
-    const std::string imgs =
-        image(a.reference_png, "reference", reference_caption, "reference") + image(a.render_png, "render", "render", "render") +
-        image(a.error_png, "error map", scale.empty() ? "error" : "error " + scale, "error");
+    const std::string imgs = trio_images(r);
     if (!imgs.empty())
       h += "<div class=\"trio\"><div class=\"imgs\">" + imgs +
            "</div><div class=\"tools\"><button type=\"button\" class=\"flicker\" title=\"show the reference in the "
@@ -330,13 +335,18 @@ class Writer {
     if (group && group->size() > 1) {
       h += fmt::format("<div class=\"group\" data-count=\"{}\"><b>{}</b><ul class=\"cells\">", group->size(),
                        escape(group_cells_text(*group)));
+      // Each cell's images wait in a <template> (not loaded) until its "show" puts them in the trio.
+      std::string templates;
       for (const CellResult* c : *group) {
         const size_t at = size_t(c - report_.results.data());
-        h += fmt::format("<li><a class=\"jump\" href=\"#c{}\">{} {}/{} {}</a> {}</li>", at, escape(c->language),
-                         escape(c->backend), escape(c->path), escape(c->shape),
+        const std::string its = imgs.empty() ? "" : trio_images(*c);
+        h += fmt::format("<li{}>{}<a class=\"jump\" href=\"#c{}\">{} {}/{} {}</a> {}</li>", c == &r ? " class=\"shown\"" : "",
+                         its.empty() ? "" : fmt::format("<button type=\"button\" class=\"pick\" data-cell=\"{}\">show</button> ", at),
+                         at, escape(c->language), escape(c->backend), escape(c->path), escape(c->shape),
                          c->status == CellStatus::fail ? "max " + sci(c->metrics.max_abs) : std::string());
+        if (!its.empty()) templates += fmt::format("<template data-cell=\"{}\">{}</template>", at, its);
       }
-      h += "</ul></div>";
+      h += "</ul>" + templates + "</div>";
     }
     if (r.known_failure)
       h += fmt::format("<p class=\"known\"><b>known failure</b>{}</p>",

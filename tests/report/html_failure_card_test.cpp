@@ -258,6 +258,14 @@ TEST_F(HtmlFailureCard, FlickerSwapsTheRenderAndZoomMovesAllThreeImages) {
     rec('wheel', transforms());
     trio.querySelector('button.unzoom').click();
     rec('reset', transforms());
+    // Another cell of the card: its images and scale take the trio's place, at the same zoom.
+    ren.dispatchEvent(new MouseEvent('click', {bubbles: true, clientX: r.left + 10, clientY: r.top + 10}));
+    var picks = card.querySelectorAll('.group li button.pick');
+    rec('picks', picks.length);
+    picks[1].click();
+    rec('picked', card.querySelector('.group li.shown button.pick').dataset.cell + ' ' +
+                  trio.querySelector('.scale').dataset.top + ' ' + (img('render').getAttribute('src') !== own));
+    rec('picked-zoom', [img('reference').style.transform, img('render').style.transform, img('error').style.transform].join('|'));
   )"), "interact", kWindow);
   ASSERT_EQ(body_attr(dom, "data-t-done"), "1") << chromium.last_command();
   // (d) Flicker shows the reference in the render's place, and back.
@@ -277,6 +285,14 @@ TEST_F(HtmlFailureCard, FlickerSwapsTheRenderAndZoomMovesAllThreeImages) {
   EXPECT_NE(wheel.find("scale(2.5)"), std::string::npos) << wheel;
   EXPECT_NE(wheel, click);
   EXPECT_EQ(body_attr(dom, "data-t-reset"), "||");
+  // A shared card shows any of its cells: the second one's images, with its own scale.
+  EXPECT_EQ(body_attr(dom, "data-t-picks"), "12");
+  const nlohmann::json& second = cell(failing_[1]);
+  EXPECT_EQ(body_attr(dom, "data-t-picked"),
+            std::to_string(failing_[1]) + " " + markup::sci(second["artefacts"]["error_scale"]["top"].get<double>()) + " true");
+  const std::string picked_zoom = body_attr(dom, "data-t-picked-zoom");
+  EXPECT_TRUE(same_three(picked_zoom)) << picked_zoom;
+  EXPECT_NE(picked_zoom.find("scale(2)"), std::string::npos) << picked_zoom;
 }
 
 }  // namespace

@@ -65,9 +65,26 @@
     s = Math.min(32, Math.max(1, s));
     tx = Math.min(0, Math.max(w - w * s, tx));   // the image keeps covering its viewport
     ty = Math.min(0, Math.max(h - h * s, ty));
-    var t = s === 1 ? '' : 'translate(' + tx + 'px, ' + ty + 'px) scale(' + s + ')';
     trio.dataset.zoom = s === 1 ? '1 0 0' : s + ' ' + tx + ' ' + ty;
+    applyZoom(trio);
+  }
+  function applyZoom(trio) {
+    var z = (trio.dataset.zoom || '1 0 0').split(' ');
+    var t = z[0] === '1' ? '' : 'translate(' + z[1] + 'px, ' + z[2] + 'px) scale(' + z[0] + ')';
     Array.prototype.forEach.call(trio.querySelectorAll('.vp img'), function (img) { img.style.transform = t; });
+  }
+  // A shared card's "show": that cell's images in the trio, at the same zoom.
+  function showCell(button) {
+    var card = button.closest('.card'), trio = card.querySelector('.trio');
+    var t = card.querySelector('template[data-cell="' + button.dataset.cell + '"]');
+    if (!trio || !t) return;
+    trio.querySelector('.imgs').innerHTML = t.innerHTML;
+    delete trio.dataset.showing;
+    show(trio);
+    applyZoom(trio);
+    Array.prototype.forEach.call(card.querySelectorAll('.group li'), function (li) {
+      li.classList.toggle('shown', li.contains(button));
+    });
   }
   // Zooms by `factor` keeping the point (x, y) of the viewport where it is.
   function zoomAt(img, factor, x, y) {
@@ -102,6 +119,8 @@
   document.addEventListener('click', function (e) {
     var view = e.target.closest('.trio .vp img');
     if (view) { var p = pointIn(view, e); zoomAt(view, e.shiftKey ? 0.5 : 2, p[0], p[1]); return; }
+    var pick = e.target.closest('.group button.pick');
+    if (pick) { showCell(pick); return; }
     var button = e.target.closest('.trio button');
     if (button) {
       if (button.classList.contains('flicker')) flicker(trioOf(button));
