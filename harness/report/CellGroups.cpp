@@ -51,6 +51,33 @@ std::string without_cell_identity(std::string text, const CellResult& r) {
   return text;
 }
 
+std::string failure_key(const CellResult& r) {
+  std::string message = without_cell_identity(r.message, r);
+  // Numbers (1.30e-01, 411, -2.5) become '#': the same failure measures differently per cell.
+  std::string text;
+  for (size_t i = 0; i < message.size();) {
+    const bool starts = std::isdigit(static_cast<unsigned char>(message[i])) ||
+                        (message[i] == '.' && i + 1 < message.size() && std::isdigit(static_cast<unsigned char>(message[i + 1])));
+    if (!starts || (i > 0 && word_character(message[i - 1]))) {   // digits inside a word (fp16, c5) stay
+      text += message[i++];
+      continue;
+    }
+    while (i < message.size() && (std::isalnum(static_cast<unsigned char>(message[i])) || message[i] == '.' ||
+                                  ((message[i] == '-' || message[i] == '+') && (message[i - 1] == 'e' || message[i - 1] == 'E'))))
+      ++i;
+    text += '#';
+  }
+  std::string fits;
+  for (const Explanation& e : r.explanations)
+    if (e.fits) {
+      fits = e.name;
+      break;
+    }
+  const char* how = r.status == CellStatus::fail ? (r.known_failure ? "known" : "fail") : to_string(r.status);
+  return fmt::format("{}\x1f{}\x1f{}\x1f{}\x1f{}\x1f{}\x1f{}", r.variant, r.language, how, text, r.attribution, fits,
+                     r.known_failure ? r.known_reason : "");
+}
+
 std::string group_where(const std::vector<const CellResult*>& cells) {
   if (cells.empty()) return "";
   const auto variants = distinct(cells, [](const CellResult& r) { return r.variant; });

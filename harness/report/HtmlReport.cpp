@@ -17,6 +17,8 @@
 #include "core/AtomicFile.h"
 #include "core/Fnv1a.h"
 #include "report/CellExplanation.h"
+#include "report/CellGroups.h"
+#include "report/HtmlScaleBar.h"
 #include "report/Markup.h"
 #include "report/ReportAssets.gen.h"   // report_css, report_js: generated from report/assets/
 #include "report/SummaryMatrix.h"
@@ -127,6 +129,17 @@ class Writer {
       const CellResult& r = report_.results[i];
       groups_[group_key(r)].push_back(i);
     }
+    int stored = 0;
+    for (const char* k : {"fail", "error", "known", "skipped"}) {
+      std::vector<const CellResult*> cells;
+      for (const CellResult& r : report_.results)
+        if (kind(r) == k) cells.push_back(&r);
+      auto& cards = failure_cards_[k];
+      for (auto& group : group_cells(cells, [](const CellResult& r) { return failure_key(r); }))
+        cards.push_back({std::move(group), -1});
+      for (FailureCard& c : cards)
+        if (c.cells.size() > 1) c.store = stored++;
+    }
   }
   static std::string group_key(const CellResult& r) { return r.case_name + "/" + r.variant + "/" + r.shape; }
 
@@ -218,7 +231,9 @@ class Writer {
 
   // ---- markup ----
 
-  std::string image(const std::string& recorded, const std::string& label, const std::string& caption) const {
+  // An image in a <figure>; `role` (reference, render, error) puts it in a zoomable viewport.
+  std::string image(const std::string& recorded, const std::string& label, const std::string& caption,
+                    const std::string& role = "") const {
     if (recorded.empty()) return "";
     std::string body;
     if (auto it = embedded_.find(recorded); it != embedded_.end()) {
@@ -229,7 +244,9 @@ class Writer {
     } else {
       body = fmt::format("<div class=\"missing\">missing<br><code>{}</code></div>", escape(recorded));
     }
-    return fmt::format("<figure>{}<figcaption>{}</figcaption></figure>", body, caption);
+    if (role.empty()) return fmt::format("<figure>{}<figcaption>{}</figcaption></figure>", body, caption);
+    return fmt::format("<figure data-role=\"{}\"><div class=\"vp\">{}</div><figcaption>{}</figcaption></figure>", role, body,
+                       caption);
   }
 
   std::string source_link(const std::string& recorded, const std::string& label) const {
@@ -275,16 +292,62 @@ class Writer {
     return h + "</div>";
   }
 
-  std::string card(size_t index) const {
+  // A cell's card: its images first (reference or original | render | error, with the
+  // error map's scale and a flicker toggle, zoom synchronised across the three), then what
+  // it measured, the cells that failed the same way (`group`, when more than this one),
+  // why it failed (collapsed: the message once, the attribution, every convention fit),
+  // the other renders of its shape and every number. `headline_shown`: the message's
+  // first line is already on the card's summary line.
+  // reference | render | error (with its scale bar) of one cell.
+  std::string trio_images(const CellResult& r) const {
+    const CellArtefacts& a = r.artefacts;
+    const std::string reference_caption = r.reference.kind == "render"   ? "original (" + escape(r.reference.label) + ")"
+                                          : r.reference.kind == "images" ? std::string("stored image")
+                                                                         : std::string("reference");
+    const std::string scale = html_error_scale_bar(r);
+    return image(a.reference_png, "reference", reference_caption, "reference") + image(a.render_png, "render", "render", "render") +
+           image(a.error_png, "error map", scale.empty() ? "error" : "error " + scale, "error");
+  }
+
+  std::string card(size_t index, const std::vector<const CellResult*>* group = nullptr, bool headline_shown = false) const {
     const CellResult& r = report_.results[index];
     const CellMetrics& m = r.metrics;
     const CellArtefacts& a = r.artefacts;
     const std::string k = kind(r);
+    const bool measured = r.status == CellStatus::pass || r.status == CellStatus::fail;
     std::string h = "<div class=\"card\">";
-    if (!r.message.empty()) h += fmt::format("<pre class=\"msg\">{}</pre>", escape(r.message));
-    if (!r.attribution.empty() || !r.attribution_reason.empty())
-      h += fmt::format("<p class=\"attr\"><b>attribution: {}</b>{}</p>", escape(r.attribution.empty() ? "-" : r.attribution),
-                       r.attribution_reason.empty() ? "" : " &mdash; " + escape(r.attribution_reason));
+
+    const std::string imgs = trio_images(r);
+    if (!imgs.empty())
+      h += "<div class=\"trio\"><div class=\"imgs\">" + imgs +
+           "</div><div class=\"tools\"><button type=\"button\" class=\"flicker\" title=\"show the reference in the "
+           "render's place, and back\">flicker render / reference</button> <button type=\"button\" class=\"unzoom\">reset "
+           "zoom</button> <small>click an image to zoom in (shift-click out, or the wheel); all three follow</small></div></div>";
+    if (measured)
+      h += fmt::format("<p class=\"measured\">max error <b>{}</b>{} &middot; threshold {} &middot; {} bad pixels &middot; "
+                       "rmse {} &middot; psnr {} dB</p>",
+                       sci(m.max_abs),
+                       r.interior_threshold > 0 && std::isfinite(m.max_abs)
+                           ? fmt::format(" ({:.3g}&times; the threshold)", m.max_abs / r.interior_threshold)
+                           : std::string(),
+                       escape(tolerance_text(r.interior_threshold, r.interior_threshold_rel)), m.bad_pixels, sci(m.rmse),
+                       db(m.psnr));
+    if (group && group->size() > 1) {
+      h += fmt::format("<div class=\"group\" data-count=\"{}\"><b>{}</b><ul class=\"cells\">", group->size(),
+                       escape(group_cells_text(*group)));
+      // Each cell's images wait in a <template> (not loaded) until its "show" puts them in the trio.
+      std::string templates;
+      for (const CellResult* c : *group) {
+        const size_t at = size_t(c - report_.results.data());
+        const std::string its = imgs.empty() ? "" : trio_images(*c);
+        h += fmt::format("<li{}>{}<a class=\"jump\" href=\"#c{}\">{} {}/{} {}</a> {}</li>", c == &r ? " class=\"shown\"" : "",
+                         its.empty() ? "" : fmt::format("<button type=\"button\" class=\"pick\" data-cell=\"{}\">show</button> ", at),
+                         at, escape(c->language), escape(c->backend), escape(c->path), escape(c->shape),
+                         c->status == CellStatus::fail ? "max " + sci(c->metrics.max_abs) : std::string());
+        if (!its.empty()) templates += fmt::format("<template data-cell=\"{}\">{}</template>", at, its);
+      }
+      h += "</ul>" + templates + "</div>";
+    }
     if (r.known_failure)
       h += fmt::format("<p class=\"known\"><b>known failure</b>{}</p>",
                        r.known_reason.empty() ? "" : ": " + escape(r.known_reason));
@@ -293,23 +356,32 @@ class Writer {
     const std::string against = judged_against(r);
     if (!against.empty()) h += fmt::format("<p class=\"note\"><b>judged against</b>: {}</p>", escape(against));
     if (r.reference.is_reference) h += "<p class=\"note\"><b>this render is the reference</b> of its case</p>";
+
+    // Why: collapsed behind one line, unless there are no images to look at first (an error).
+    std::string why;
+    const bool one_line = r.message.find('\n') == std::string::npos && r.message.size() <= 160;
+    if (!r.message.empty() && !(headline_shown && one_line)) why += fmt::format("<pre class=\"msg\">{}</pre>", escape(r.message));
+    if (!r.attribution.empty() || !r.attribution_reason.empty())
+      why += fmt::format("<p class=\"attr\"><b>attribution: {}</b>{}</p>", escape(r.attribution.empty() ? "-" : r.attribution),
+                         r.attribution_reason.empty() ? "" : " &mdash; " + escape(r.attribution_reason));
     // Which convention explains a failure: each fit with its residual, the fitting ones first.
     if (!r.explanations.empty()) {
-      h += "<table class=\"kv\"><tr><th>convention</th><th>fits</th><th>residual</th><th>rmse</th></tr>";
+      why += "<table class=\"kv\"><tr><th>convention</th><th>fits</th><th>residual</th><th>rmse</th></tr>";
       for (const Explanation& e : r.explanations)
-        h += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>", escape(e.summary),
-                         e.fits ? "<b>yes</b>" : "no", sci(e.residual), sci(e.rmse));
-      h += "</table>";
+        why += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>", escape(e.summary),
+                           e.fits ? "<b>yes</b>" : "no", sci(e.residual), sci(e.rmse));
+      why += "</table>";
+    }
+    if (r.divergence) why += departs(*r.divergence);
+    if (!why.empty()) {
+      std::string line = best_explanation(r);
+      if (line.empty() && !r.explanations.empty()) line = fmt::format("no convention explains it ({} tried)", r.explanations.size());
+      if (line.empty()) line = withheld_explanation(r);
+      if (!r.attribution.empty()) line += (line.empty() ? "" : "; ") + ("attribution: " + r.attribution);
+      h += fmt::format("<details class=\"why\"{}><summary><b>{}</b>{}</summary>{}</details>", imgs.empty() ? " open" : "",
+                       k == "pass" ? "message" : "why", line.empty() ? "" : ": " + escape(line), why);
     }
 
-    if (r.divergence) h += departs(*r.divergence);
-
-    const std::string reference_caption = r.reference.kind == "render"   ? "original (" + escape(r.reference.label) + ")"
-                                          : r.reference.kind == "images" ? std::string("stored image")
-                                                                         : std::string("reference");
-    const std::string imgs = image(a.reference_png, "reference", reference_caption) + image(a.render_png, "render", "render") +
-                             image(a.error_png, "error heat map", "error (threshold = mid grey)");
-    if (!imgs.empty()) h += "<div class=\"imgs\">" + imgs + "</div>";
     // Every render of this case/variant/shape, for failing cells: which ones agree.
     if (k != "pass" && k != "skipped") {
       std::string strip;
@@ -513,24 +585,34 @@ class Writer {
     return h + "</section>\n";
   }
 
+  // Cells that failed the same way (report/CellGroups.h failure_key) share one card: its
+  // first cell's images and numbers, and the list of all of them.
   std::string failure_section(const char* k, const char* title, size_t open_limit) const {
-    std::vector<size_t> cells;
-    for (size_t i = 0; i < report_.results.size(); ++i)
-      if (kind(report_.results[i]) == k) cells.push_back(i);
-    if (cells.empty()) return "";
-    std::string h = fmt::format("<section class=\"fails\" id=\"sec-{}\"><h2>{} ({})</h2>\n", k, title, cells.size());
-    for (size_t n = 0; n < cells.size(); ++n) {
-      const size_t i = cells[n];
-      const CellResult& r = report_.results[i];
+    const auto& cards = failure_cards_.at(k);
+    if (cards.empty()) return "";
+    size_t cells = 0;
+    for (const FailureCard& c : cards) cells += c.cells.size();
+    std::string h = fmt::format("<section class=\"fails\" id=\"sec-{}\"><h2>{} ({}{})</h2>\n", k, title, cells,
+                                cards.size() < cells ? fmt::format(", in {} card{}", cards.size(), cards.size() == 1 ? "" : "s") : "");
+    for (size_t n = 0; n < cards.size(); ++n) {
+      const FailureCard& c = cards[n];
+      const CellResult& r = *c.cells.front();
+      const size_t i = size_t(&r - report_.results.data());
+      const bool open = n < open_limit;
       std::string headline = r.message.substr(0, r.message.find('\n'));
       if (headline.size() > 160) headline = headline.substr(0, 157) + "...";
+      const std::string who = c.cells.size() == 1 ? r.case_name + " " + r.variant + " " + r.language : group_where(c.cells);
+      const std::string where =
+          c.cells.size() == 1 ? r.backend + "/" + r.path + " " + r.shape : fmt::format("{} cells", c.cells.size());
       h += fmt::format(
-          "<details class=\"fc\" id=\"f{}\"{}><summary><span class=\"st {}\">{}</span> <b>{}</b> {} &nbsp;<span "
-          "class=\"why\">{}{}</span> <a class=\"jump\" href=\"#c{}\">table&nbsp;row</a></summary>{}</details>\n",
-          i, n < open_limit ? " open" : fmt::format(" data-card=\"{}\"", i), k, status_label(k),
-          escape(r.case_name + " " + r.variant + " " + r.language),
-          escape(r.backend + "/" + r.path + " " + r.shape), escape(headline),
-          r.attribution.empty() ? "" : " &mdash; " + escape(r.attribution), i, n < open_limit ? card(i) : "");
+          "<details class=\"fc\" id=\"f{}\" data-count=\"{}\"{}><summary><span class=\"st {}\">{}</span> <b>{}</b> {} "
+          "&nbsp;<span class=\"why\">{}{}</span> <a class=\"jump\" href=\"#c{}\">table&nbsp;row</a></summary>{}</details>\n",
+          i, c.cells.size(),
+          open                 ? std::string(" open")
+          : c.cells.size() > 1 ? fmt::format(" data-group=\"{}\"", c.store)
+                               : fmt::format(" data-card=\"{}\"", i),
+          k, status_label(k), escape(who), escape(where), escape(headline),
+          r.attribution.empty() ? "" : " &mdash; " + escape(r.attribution), i, open ? card(i, &c.cells, true) : "");
     }
     return h + "</section>\n";
   }
@@ -574,8 +656,9 @@ class Writer {
     h += "</table>\n";
     h += fmt::format(
         "<p class=\"policy\">Images: {} embedded ({:.1f} MB), {} linked to the run's files, {} missing. Embedded first: "
-        "failing cells, one passing example per case/variant, other renders of failing shapes, then the rest while the budget lasts. Error heat maps show the "
-        "interior threshold as mid grey. Click a table header to sort, a row for details, an image to zoom.{}{}</p>\n",
+        "failing cells, one passing example per case/variant, other renders of failing shapes, then the rest while the budget lasts. Error maps are in "
+        "false colour from 0 to the cell's worst interior error (or its threshold), with the scale under each. Click a "
+        "table header to sort, a row for details, an image to zoom (the three images of a card zoom together).{}{}</p>\n",
         summary_.images_embedded, summary_.image_bytes / 1048576.0, summary_.images_linked, summary_.images_missing,
         report_.keep_images == "failing" ? " The run kept the images of the cells that did not pass only "
                                            "(<code>--keep-images all</code> keeps every cell's)."
@@ -647,6 +730,17 @@ class Writer {
     // thousands of hidden cards would otherwise be parsed into the DOM on load.
     h += "<script type=\"application/json\" id=\"sb-cards\">[";
     for (size_t i = 0; i < report_.results.size(); ++i) h += (i ? ",\n" : "") + markup::script_json_string(card(i));
+    h += "]</script>\n";
+    // The cards of failures that several cells share, put into the page when opened.
+    h += "<script type=\"application/json\" id=\"sb-groups\">[";
+    bool first = true;
+    for (const char* k : {"fail", "error", "known", "skipped"})
+      for (const FailureCard& c : failure_cards_.at(k))
+        if (c.store >= 0) {
+          h += (first ? "" : ",\n") +
+               markup::script_json_string(card(size_t(c.cells.front() - report_.results.data()), &c.cells, true));
+          first = false;
+        }
     h += "]</script>\n<script>\n\n" + std::string(report_assets::report_js) + "</script>\n</body></html>\n";
     return h;
   }
@@ -657,6 +751,11 @@ class Writer {
   HtmlSummary summary_;
   size_t budget_ = 0;
   std::map<std::string, std::vector<size_t>> groups_;
+  struct FailureCard {
+    std::vector<const CellResult*> cells;   // failed the same way, in run order
+    int store = -1;                         // its card's place in the page's group store (more than one cell)
+  };
+  std::map<std::string, std::vector<FailureCard>> failure_cards_;   // by kind()
   std::set<std::string> considered_;
   std::map<std::string, std::string> embedded_;   // recorded path -> store key
   std::vector<std::pair<std::string, std::string>> store_;   // key, data URI

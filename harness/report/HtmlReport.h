@@ -16,8 +16,12 @@ namespace shaderbed {
 // The page: toolchain, totals and the image policy; the summary matrix (report/SummaryMatrix:
 // case/variant x language/backend/path, as the console prints it), each count a link that
 // filters the table to its cells; failure cards (new failures open, errors, then known
-// failures collapsed) with the reference, the render, the error heat map and every render
-// of the same case/variant/shape side by side; a sortable, filterable table of all cells
+// failures collapsed), one per way of failing (cells of a case/variant/language with the
+// same failure, report/CellGroups.h failure_key, share a card that lists them), each
+// showing first the reference | render | error map (false colour with its scale bar,
+// report/HtmlScaleBar.h; a flicker toggle; zoom synchronised across the three), then the
+// numbers, then why (collapsed: the message, the attribution, the convention fits), and
+// every render of the same case/variant/shape (docs/html-report.md); a sortable, filterable table of all cells
 // (click a header to sort; click a row for the same card with all metrics, value counts,
 // tolerances and LUT derivation, timings, SPIR-V hashes and links).
 //

@@ -152,6 +152,11 @@ ojson cell_json(const CellResult& r) {
                        {"vertex_spirv", a.vertex_spirv},
                        {"fragment_spirv", a.fragment_spirv}, {"vertex_cross_glsl", a.vertex_cross_glsl},
                        {"fragment_cross_glsl", a.fragment_cross_glsl}};
+  if (a.error_scale.top > 0) {   // only with an error map: what its colours stand for
+    const ErrorMapScale& e = a.error_scale;
+    cell["artefacts"]["error_scale"] = {{"top", json_number(e.top)}, {"peak", json_number(e.peak)}};
+    if (e.peak_x >= 0) cell["artefacts"]["error_scale"]["peak_x"] = e.peak_x, cell["artefacts"]["error_scale"]["peak_y"] = e.peak_y;
+  }
   if (!a.render_exr.empty()) cell["image"] = a.render_exr;   // schema 1 name, kept for old readers
   return cell;
 }
@@ -459,6 +464,13 @@ CellResult read_cell(const json& c, const std::string& p) {
     read(*a, "fragment_spirv", ap, x.fragment_spirv);
     read(*a, "vertex_cross_glsl", ap, x.vertex_cross_glsl);
     read(*a, "fragment_cross_glsl", ap, x.fragment_cross_glsl);
+    if (const json* e = object_at(*a, "error_scale", ap)) {
+      const std::string ep = child(ap, "error_scale");
+      read(*e, "top", ep, x.error_scale.top);
+      read(*e, "peak", ep, x.error_scale.peak);
+      read(*e, "peak_x", ep, x.error_scale.peak_x);
+      read(*e, "peak_y", ep, x.error_scale.peak_y);
+    }
   }
   return r;
 }

@@ -49,7 +49,9 @@ namespace shaderbed {
 //    "instructions": {"vertex", "fragment"},   (SPIR-V function-body instructions as drawn)
 //    "artefacts": {"render_exr", "render_png", "error_exr", "error_png", "reference_png",
 //                  "stored_exr", "vertex_spirv", "fragment_spirv", "vertex_cross_glsl",
-//                  "fragment_cross_glsl"},
+//                  "fragment_cross_glsl",
+//                  "error_scale": {"top", "peak", "peak_x", "peak_y"}},   (with an error map only:
+//                  its colours run from 0 to top; peak: the worst interior error, at peak_x, peak_y)
 //    "image": render_exr                      (v1 alias, only when set; ignored on read)
 //  }]}
 //

@@ -46,11 +46,23 @@ struct CellMetrics {
   ValueCounts reference_values;
 };
 
+// What the error PNG's colours stand for (report/ErrorScale.h): 0 to `top`, the largest
+// finite interior error or the interior threshold when that is larger, so every map has
+// the threshold on its scale and its worst interior pixel at the top colour. `peak` is
+// that largest error, at pixel (peak_x, peak_y) from the top left (-1: no interior pixel).
+// top = 0: no map, or a results file from before the scale was recorded.
+struct ErrorMapScale {
+  double top = 0;
+  double peak = 0;
+  int peak_x = -1, peak_y = -1;
+};
+
 struct CellArtefacts {                // paths under the run's --out folder ("" = not written)
   std::string render_exr, render_png, error_exr, error_png, reference_png;
   std::string vertex_spirv, fragment_spirv;            // disassembly (.spvasm)
   std::string vertex_cross_glsl, fragment_cross_glsl;  // SPIRV-Cross output
   std::string stored_exr;                              // run --save-images: the image later runs compare with
+  ErrorMapScale error_scale;                           // error_png's colours
 };
 
 // A median with its confidence interval (timing/MedianInterval).

@@ -13,6 +13,7 @@
 
 #include "backends/Backend.h"
 #include "compare/Attribution.h"
+#include "compare/ErrorMap.h"
 #include "compare/ConventionFit.h"
 #include "compare/ImageComparison.h"
 #include "compare/ImageFiles.h"
@@ -538,9 +539,12 @@ struct GroupRunner::Impl final : GroupDrawer {
     keep(write_exr(r.artefacts.render_exr, scene_.width, scene_.height, image.rgba), r.artefacts.render_exr);
     keep(write_png(r.artefacts.render_png, image), r.artefacts.render_png);
     keep(write_exr(r.artefacts.error_exr, scene_.width, scene_.height, cmp.error.rgba), r.artefacts.error_exr);
-    // Error heat map: the interior tolerance shows as mid grey.
-    keep(write_png(r.artefacts.error_png, cmp.error, float(0.5 / std::max(r.interior_threshold, 1e-12))),
-         r.artefacts.error_png);
+    // The error map in false colour from 0 to the cell's worst interior error (or its
+    // threshold), the scale recorded for the reports' legend.
+    const ErrorMap map = error_map(cmp.error, r.interior_threshold);
+    r.artefacts.error_scale = map.scale;
+    keep(write_error_map(r.artefacts.error_png, map), r.artefacts.error_png);
+    if (r.artefacts.error_png.empty()) r.artefacts.error_scale = {};
     if (!lost.empty())
       r.warnings.push_back(fmt::format("{} image{} not written ({}; the verdict stands): {}", lost.size(),
                                        lost.size() == 1 ? "" : "s", why, fmt::join(lost, ", ")));

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "compare/ErrorMap.h"
 #include "compare/ImageFiles.h"
 #include "imageio/ImageIoModule.h"
 
@@ -38,8 +39,8 @@ Result<std::vector<std::string>> write_screenshot(const std::string& stem, const
   }
   if (frame.error) {
     const Image& error = *frame.error;
-    const float scale = float(0.5 / std::max(frame.interior_threshold, 1e-12));
-    for (auto [ok, file] : {std::pair{write_png(stem + ".error.png", error, scale), stem + ".error.png"},
+    for (auto [ok, file] : {std::pair{write_error_map(stem + ".error.png", error_map(error, frame.interior_threshold)),
+                                      stem + ".error.png"},
                             std::pair{write_exr(stem + ".error.exr", error.width, error.height, error.rgba),
                                       stem + ".error.exr"}})
       if (auto added = add(ok, file); !added) return std::unexpected(added.error());

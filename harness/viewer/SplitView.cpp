@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "compare/ErrorMap.h"
 #include "compare/ImageFiles.h"
 
 namespace shaderbed::viewer {
@@ -26,8 +27,9 @@ Image reference_as_image(const ReferenceImage& reference) {
 DisplayImage reference_panel(const ReferenceImage& reference) { return render_panel(reference_as_image(reference)); }
 
 DisplayImage error_panel(const Image& error, double interior_threshold) {
-  // The same scale as the run's .error.png (run/GroupRunner.cpp) and the HTML report.
-  return {error.width, error.height, png_pixels(error, float(0.5 / std::max(interior_threshold, 1e-12)))};
+  // The same colours and scale as the run's .error.png (run/GroupRunner.cpp) and the HTML report.
+  ErrorMap map = error_map(error, interior_threshold);
+  return {map.width, map.height, std::move(map.rgb)};
 }
 
 DisplayImage empty_panel(int width, int height) {

@@ -2,7 +2,8 @@
 // What the window shows, as 8-bit RGB: the render alone, or render | reference | error
 // heat map side by side. Each panel looks exactly like the PNG `run --out` writes for it
 // (compare/ImageFiles.h): colours clamped, NaN/Inf magenta, uncovered pixels slate, and
-// the error map scaled so the case's interior tolerance is mid grey, as in the HTML report.
+// the error map in false colour from 0 to the worst interior error (compare/ErrorMap.h), as
+// in the HTML report.
 #include <cstdint>
 #include <optional>
 #include <utility>
@@ -22,7 +23,7 @@ constexpr int kSplitGap = 2;   // black pixels between the panels
 
 DisplayImage render_panel(const Image& render);
 DisplayImage reference_panel(const ReferenceImage& reference);
-// |render - reference| per channel; `interior_threshold` (the absolute part) shows as mid grey.
+// |render - reference| as compare/ErrorMap.h colours it (`interior_threshold`: the absolute part).
 DisplayImage error_panel(const Image& error, double interior_threshold);
 // A panel with nothing to show (no reference could be drawn): background only.
 DisplayImage empty_panel(int width, int height);

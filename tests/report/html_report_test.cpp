@@ -17,6 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "HeadlessChromium.h"
 #include "ReportTestSupport.h"
 #include "report/HtmlReport.h"
 #include "report/Markup.h"
@@ -25,96 +26,12 @@ namespace shaderbed {
 namespace {
 
 namespace fs = std::filesystem;
-
-// Debian's package; SHADERBED_CHROMIUM overrides (e.g. to check the missing-browser message).
-std::string chromium_path() {
-  const char* env = std::getenv("SHADERBED_CHROMIUM");
-  return env && *env ? env : "/usr/bin/chromium";
-}
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::string quote(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
-
-size_t count(const std::string& text, const std::string& needle) {
-  size_t n = 0;
-  for (size_t at = text.find(needle); at != std::string::npos; at = text.find(needle, at + needle.size())) ++n;
-  return n;
-}
-
-// The attribute of <body> in a dumped DOM ("" when absent).
-std::string body_attr(const std::string& dom, const std::string& name) {
-  const size_t start = dom.find("<body");
-  if (start == std::string::npos) return "";
-  const std::string tag = dom.substr(start, dom.find('>', start) - start);
-  std::smatch m;
-  return std::regex_search(tag, m, std::regex(name + "=\"([^\"]*)\"")) ? m[1].str() : "";
-}
-
-// file:// URL of a local path (percent-encoding what a URL cannot hold raw).
-std::string file_url(const fs::path& path, const std::string& fragment = "") {
-  std::string out = "file://";
-  for (unsigned char c : fs::absolute(path).string()) {
-    if (std::isalnum(c) || std::string("/-_.~").find(char(c)) != std::string::npos) out += char(c);
-    else {
-      static const char* hex = "0123456789ABCDEF";
-      out += '%';
-      out += hex[c >> 4];
-      out += hex[c & 15];
-    }
-  }
-  return fragment.empty() ? out : out + "#" + fragment;
-}
-
-class Chromium {
- public:
-  Chromium() : work_(test::fresh_dir("chromium")) {}
-  ~Chromium() { fs::remove_all(work_); }
-
-  // The flags that make headless Chromium quiet, offline and root-safe, with a fresh profile.
-  std::string base(const std::string& name) const {
-    const fs::path profile = work_ / ("profile-" + name);
-    fs::create_directories(profile);
-    return "timeout 120 " + quote(chromium_path()) +
-           " --headless --no-sandbox --disable-gpu --disable-quic --no-first-run --disable-background-networking"
-           " --disable-component-update --disable-sync --disable-dev-shm-usage --hide-scrollbars"
-           " --user-data-dir=" + quote(profile.string());
-  }
-
-  // The DOM after the page's script ran (virtual time lets timers and image decoding settle).
-  std::string dump_dom(const std::string& url, const std::string& name) {
-    const fs::path dom = work_ / (name + ".html"), log = work_ / (name + ".log");
-    last_command_ = base(name) + " --virtual-time-budget=10000 --dump-dom " + quote(url);
-    const int status = std::system((last_command_ + " > " + quote(dom.string()) + " 2> " + quote(log.string())).c_str());
-    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << last_command_ << "\n" << slurp(log);
-    return slurp(dom);
-  }
-
-  bool screenshot(const std::string& url, const fs::path& png) {
-    fs::remove(png);
-    const fs::path log = work_ / "screenshot.log";
-    last_command_ = base("shot") + " --virtual-time-budget=10000 --window-size=1280,900 --screenshot=" +
-                    quote(png.string()) + " " + quote(url);
-    const int status = std::system((last_command_ + " > " + quote(log.string()) + " 2>&1").c_str());
-    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << last_command_ << "\n" << slurp(log);
-    return fs::exists(png);
-  }
-
-  const std::string& last_command() const { return last_command_; }
-
- private:
-  fs::path work_;
-  std::string last_command_;
-};
+using test::body_attr;
+using test::Chromium;
+using test::chromium_path;
+using test::count;
+using test::file_url;
+using test::slurp;
 
 // The cards the page keeps in its JSON store (put into the page when a row is opened).
 std::vector<std::string> stored_cards(const std::string& html) {
@@ -172,8 +89,11 @@ TEST(HtmlReport, WritesOneSelfContainedPageAndCopiesSources) {
                              "wall 0.750 [0.688, 1.125], timestamp queries 0.625 [0.500, 0.875]",
                              "vertex 10, fragment 34"})
     EXPECT_NE(text.find(needle), std::string::npos) << needle;
-  EXPECT_EQ(html.find("</script", html.find("id=\"sb-cards\"")), html.find("</script>\n<script>\n", html.find("id=\"sb-cards\"")))
+  EXPECT_EQ(html.find("</script", html.find("id=\"sb-cards\"")),
+            html.find("</script>\n<script type=\"application/json\" id=\"sb-groups\">", html.find("id=\"sb-cards\"")))
       << "nothing in the card store closes its script element early";
+  EXPECT_EQ(html.find("</script", html.find("id=\"sb-groups\"")), html.find("</script>\n<script>\n", html.find("id=\"sb-groups\"")))
+      << "nor in the store of cards that several cells share";
   // The same report gives the same page.
   ASSERT_TRUE(write_html(report, (dir / "html2").string()));
   EXPECT_EQ(slurp(dir / "html2" / "index.html"), html);
@@ -192,7 +112,7 @@ TEST(HtmlReport, ImageBudgetKeepsFailuresFirst) {
   const std::string html = slurp(dir / "html" / "index.html");
   const size_t card = html.find("id=\"f1\"");
   ASSERT_NE(card, std::string::npos);
-  const std::string failure = html.substr(card, html.find("</details>", card) - card);
+  const std::string failure = html.substr(card, html.find("</details>\n", card) - card);   // the card, its own <details> inside
   EXPECT_EQ(count(failure, "data-img=\""), 3u) << "reference, render and error of the failure are embedded";
   EXPECT_GE(count(failure, "data-file=\""), 2u) << "the other renders are linked";
   fs::remove_all(dir);

@@ -62,7 +62,7 @@ RunReport every_field() {
   r.vertex_spirv_hash = "00112233aabbccdd";
   r.fragment_spirv_hash = "ffeeddccbbaa9988";
   r.artefacts = {"a.exr", "a.png", "a.error.exr", "a.error.png", "reference.png",
-                 "v.spvasm", "f.spvasm", "v.cross.glsl", "f.cross.glsl", "stored/a.exr"};
+                 "v.spvasm", "f.spvasm", "v.cross.glsl", "f.cross.glsl", "stored/a.exr", {0.25, 0.25, 17, 3}};
   // A differential cell's fields: the tolerance's relative part and reason, the
   // reference it was judged against, the convention fits, the scene hash.
   m.tolerance_share = 4.5e3;
@@ -166,6 +166,9 @@ TEST(JsonReport, RoundTripIsExact) {
   EXPECT_EQ(r.lut_bound, 3.5e-4);
   EXPECT_EQ(r.time_ms.at("readback"), 0.0625);
   EXPECT_EQ(r.artefacts.vertex_cross_glsl, "v.cross.glsl");
+  EXPECT_EQ(r.artefacts.error_scale.top, 0.25);
+  EXPECT_EQ(r.artefacts.error_scale.peak_x, 17);
+  EXPECT_EQ(r.artefacts.error_scale.peak_y, 3);
   EXPECT_EQ(r.fragment_spirv_hash, "ffeeddccbbaa9988");
   EXPECT_TRUE(r.program_cached);
   EXPECT_EQ(r.gpu.clock, "GL_TIME_ELAPSED");

@@ -2,8 +2,15 @@
   'use strict';
   var store = JSON.parse(document.getElementById('sb-images').textContent);
   var cardStore = null;   // parsed on the first card opened
+  var groupStore = null;  // the cards several failing cells share, likewise
   // Puts a lazily stored card into `el` (a detail cell or a closed failure card).
   function fill(el) {
+    if (el.dataset.group !== undefined) {
+      if (!groupStore) groupStore = JSON.parse(document.getElementById('sb-groups').textContent);
+      el.insertAdjacentHTML('beforeend', groupStore[+el.dataset.group]);
+      delete el.dataset.group;
+      return;
+    }
     if (el.dataset.card === undefined) return;
     if (!cardStore) cardStore = JSON.parse(document.getElementById('sb-cards').textContent);
     el.insertAdjacentHTML('beforeend', cardStore[+el.dataset.card]);
@@ -50,7 +57,76 @@
     if (open) { fill(detail.cells[0]); show(detail); }
   }
 
+  // A card's reference | render | error: zoom applies one transform to all three (so the
+  // same pixel stays under the eye in each), flicker shows the reference in the render's place.
+  function trioOf(el) { return el.closest('.trio'); }
+  function setZoom(trio, s, tx, ty) {
+    var vp = trio.querySelector('.vp'), w = vp ? vp.clientWidth : 0, h = vp ? vp.clientHeight : 0;
+    s = Math.min(32, Math.max(1, s));
+    tx = Math.min(0, Math.max(w - w * s, tx));   // the image keeps covering its viewport
+    ty = Math.min(0, Math.max(h - h * s, ty));
+    trio.dataset.zoom = s === 1 ? '1 0 0' : s + ' ' + tx + ' ' + ty;
+    applyZoom(trio);
+  }
+  function applyZoom(trio) {
+    var z = (trio.dataset.zoom || '1 0 0').split(' ');
+    var t = z[0] === '1' ? '' : 'translate(' + z[1] + 'px, ' + z[2] + 'px) scale(' + z[0] + ')';
+    Array.prototype.forEach.call(trio.querySelectorAll('.vp img'), function (img) { img.style.transform = t; });
+  }
+  // A shared card's "show": that cell's images in the trio, at the same zoom.
+  function showCell(button) {
+    var card = button.closest('.card'), trio = card.querySelector('.trio');
+    var t = card.querySelector('template[data-cell="' + button.dataset.cell + '"]');
+    if (!trio || !t) return;
+    trio.querySelector('.imgs').innerHTML = t.innerHTML;
+    delete trio.dataset.showing;
+    show(trio);
+    applyZoom(trio);
+    Array.prototype.forEach.call(card.querySelectorAll('.group li'), function (li) {
+      li.classList.toggle('shown', li.contains(button));
+    });
+  }
+  // Zooms by `factor` keeping the point (x, y) of the viewport where it is.
+  function zoomAt(img, factor, x, y) {
+    var trio = trioOf(img), z = (trio.dataset.zoom || '1 0 0').split(' ').map(Number);
+    var s = Math.min(32, Math.max(1, z[0] * factor)), k = s / z[0];
+    setZoom(trio, s, x - (x - z[1]) * k, y - (y - z[2]) * k);
+  }
+  function pointIn(img, e) {
+    var r = img.parentNode.getBoundingClientRect();
+    return [e.clientX - r.left, e.clientY - r.top];
+  }
+  function flicker(trio) {
+    var render = trio.querySelector('figure[data-role="render"] img');
+    var ref = trio.querySelector('figure[data-role="reference"] img');
+    if (!render || !ref || !ref.getAttribute('src')) return;
+    var toReference = trio.dataset.showing !== 'reference';
+    if (!render.dataset.own) render.dataset.own = render.getAttribute('src');
+    render.src = toReference ? ref.getAttribute('src') : render.dataset.own;
+    trio.dataset.showing = toReference ? 'reference' : 'render';
+    var caption = render.closest('figure').querySelector('figcaption');
+    if (caption) caption.textContent = toReference ? 'reference (flicker)' : 'render';
+    settle();
+  }
+  document.addEventListener('wheel', function (e) {
+    var img = e.target.closest && e.target.closest('.trio .vp img');
+    if (!img) return;
+    e.preventDefault();
+    var p = pointIn(img, e);
+    zoomAt(img, e.deltaY < 0 ? 1.25 : 0.8, p[0], p[1]);
+  }, { passive: false });
+
   document.addEventListener('click', function (e) {
+    var view = e.target.closest('.trio .vp img');
+    if (view) { var p = pointIn(view, e); zoomAt(view, e.shiftKey ? 0.5 : 2, p[0], p[1]); return; }
+    var pick = e.target.closest('.group button.pick');
+    if (pick) { showCell(pick); return; }
+    var button = e.target.closest('.trio button');
+    if (button) {
+      if (button.classList.contains('flicker')) flicker(trioOf(button));
+      else setZoom(trioOf(button), 1, 0, 0);
+      return;
+    }
     var img = e.target.closest('figure img');
     if (img) { img.classList.toggle('zoom'); return; }
     var row = e.target.closest('#cells tr.row');
