@@ -151,6 +151,8 @@ def probe(shaderbed, cases, size, kib):
                 problems.append("no cell says an image was lost (the disk did not fill?)")
             for c in cells:
                 for key, path in c.get("artefacts", {}).items():
+                    if not isinstance(path, str):
+                        continue   # error_scale: the error map's numbers, not a file
                     if path and (not os.path.exists(path) or os.path.getsize(path) == 0):
                         problems.append(f"{c['id']}: artefact {key} names {path}, which is "
                                         "missing or empty")
