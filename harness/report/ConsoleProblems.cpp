@@ -63,13 +63,21 @@ struct EntryText {
 constexpr const char* kIndent = "      ";
 
 // The entry for `cells` (one or a group): "  where: message", for a group the cells it
-// covers on the next line, then the shared details and the first cell's images.
-void print_entry(const std::vector<const CellResult*>& cells, const EntryText& text, bool images, std::FILE* out) {
+// covers on the next line, then the details of `shown` (the group's cell whose text is
+// printed) and its images.
+void print_entry(const std::vector<const CellResult*>& cells, const CellResult& shown, const EntryText& text, bool images,
+                 std::FILE* out) {
   const std::string who = cells.size() == 1 ? where(*cells.front()) : group_where(cells);
   fmt::print(out, "  {}: {}\n", who, fold_for_console(text.message, who.size() + 4, kIndent));
   if (cells.size() > 1) fmt::print(out, "{}{}\n", kIndent, fold_for_console(group_cells_text(cells), 6, kIndent));
   for (const std::string& line : text.details) fmt::print(out, "{}{}\n", kIndent, fold_for_console(line, 6, kIndent));
-  if (images) print_images(*cells.front(), out);
+  if (images) print_images(shown, out);
+}
+
+// The cells of a failure group that measure differently are shown by their worst (the
+// largest interior error): the figures printed are then the group's bound.
+const CellResult& worst_of(const std::vector<const CellResult*>& cells) {
+  return **std::ranges::max_element(cells, {}, [](const CellResult* r) { return r->metrics.max_abs; });
 }
 
 EntryText failure_text(const CellResult& r) {
@@ -102,7 +110,7 @@ bool print_problems(const RunReport& report, std::FILE* out, bool blank_line_fir
   bool printed = false;
   // Cells whose entry reads the same but for their own identity are printed once, with
   // the cells it stands for (report/CellGroups.h).
-  auto section = [&](const char* title, Tint tint, auto&& wanted, auto&& text_of, bool images) {
+  auto section = [&](const char* title, Tint tint, auto&& wanted, auto&& text_of, bool images, bool by_failure = false) {
     std::vector<const CellResult*> cells;
     for (const CellResult& r : report.results)
       if (wanted(r)) cells.push_back(&r);
@@ -115,12 +123,25 @@ bool print_problems(const RunReport& report, std::FILE* out, bool blank_line_fir
       for (const std::string& line : t.details) key += "\n" + line;
       return without_cell_identity(key, r);
     };
-    for (const auto& group : group_cells(cells, key_of)) print_entry(group, text_of(*group.front()), images, out);
+    // Failures group as the HTML report's cards do (failure_key: the numbers taken out),
+    // and apart where a port departs at another line.
+    const auto failure_key_of = [](const CellResult& r) {
+      const auto& d = r.divergence;
+      return failure_key(r) + (d ? fmt::format("\x1f{}:{}:{}", d->kind, d->file, d->line) : "");
+    };
+    const auto groups = by_failure ? group_cells(cells, failure_key_of) : group_cells(cells, key_of);
+    for (const auto& group : groups) {
+      const CellResult& shown = by_failure ? worst_of(group) : *group.front();
+      EntryText text = text_of(shown);
+      const bool differ = std::ranges::any_of(group, [&](const CellResult* r) { return key_of(*r) != key_of(shown); });
+      if (differ) text.details.insert(text.details.begin(), "figures: the worst of them, " + where(shown));
+      print_entry(group, shown, text, images, out);
+    }
   };
   const auto message_only = [](const CellResult& r) { return EntryText{r.message, {}}; };
   const auto reason_only = [](const CellResult& r) { return EntryText{r.known_reason, {}}; };
   section("failures", Tint::fail, [](const CellResult& r) { return r.status == CellStatus::fail && !r.known_failure; },
-          failure_text, true);
+          failure_text, true, true);
   section("errors", Tint::warn, [](const CellResult& r) { return r.status == CellStatus::error; }, message_only, false);
   section("known", Tint::warn, [](const CellResult& r) { return r.status == CellStatus::fail && r.known_failure; }, known_text,
           false);

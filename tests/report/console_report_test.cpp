@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <string>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "ReportTestSupport.h"
@@ -187,6 +188,32 @@ TEST(ConsoleReport, IdenticalFailuresGroupWithTheirAttribution) {
                          "      no convention offered: the render is blank\n"),
             std::string::npos)
       << grouped;
+}
+
+// One bug measures differently on every shape: its cells are one entry, as in the HTML
+// report, shown by the worst of them (the figures printed bound the group's); a port that
+// departs at another line is another entry.
+TEST(ConsoleReport, FailuresThatDifferOnlyInTheirNumbersAreOneEntryShownByTheWorst) {
+  RunReport report;
+  double max = 0.1;
+  for (const char* shape : {"cone", "cube", "sphere", "torus"}) {
+    max *= 2;
+    CellResult r = cell_of("pixel", "glsl", "gl/glsl", shape, CellStatus::fail,
+                           fmt::format("{} interior pixels over 1e-05 (max {})", int(max * 1000), max));
+    r.metrics.max_abs = shape == std::string("sphere") ? 9.5 : max;
+    r.attribution = "port";
+    r.divergence = CellResult::Divergence{.kind = "found", .file = "port.frag", .line = 16, .text = "port.frag:16  r = reflect(L, n);"};
+    report.results.push_back(r);
+  }
+  report.results.back().divergence->line = 17;
+  const std::string out = console_printed(report, {.view = ConsoleView::quiet});
+  EXPECT_EQ(lines(out, "  lambert pixel glsl", true), 2u) << out;
+  EXPECT_NE(out.find("  lambert pixel glsl: 800 interior pixels over 1e-05 (max 0.8)\n"
+                     "      3 cells: gl/glsl cone, cube, sphere\n"
+                     "      figures: the worst of them, lambert pixel glsl gl/glsl sphere\n"),
+            std::string::npos)
+      << out;
+  EXPECT_NE(out.find("  lambert pixel glsl gl/glsl torus: 1600 interior pixels"), std::string::npos) << out;
 }
 
 // A cell with NaN/Inf gets no convention fit (compare/ConventionFit.h); the console says why.
