@@ -74,8 +74,10 @@ std::string failure_key(const CellResult& r) {
       break;
     }
   const char* how = r.status == CellStatus::fail ? (r.known_failure ? "known" : "fail") : to_string(r.status);
-  return fmt::format("{}\x1f{}\x1f{}\x1f{}\x1f{}\x1f{}\x1f{}", r.variant, r.language, how, text, r.attribution, fits,
-                     r.known_failure ? r.known_reason : "");
+  // A port that departs at another line is another bug.
+  const std::string departs = r.divergence ? fmt::format("{}:{}:{}", r.divergence->kind, r.divergence->file, r.divergence->line) : "";
+  return fmt::format("{}\x1f{}\x1f{}\x1f{}\x1f{}\x1f{}\x1f{}\x1f{}", r.variant, r.language, how, text, r.attribution, fits,
+                     r.known_failure ? r.known_reason : "", departs);
 }
 
 std::string group_where(const std::vector<const CellResult*>& cells) {

@@ -16,9 +16,10 @@ std::string without_cell_identity(std::string text, const CellResult& r);
 
 // What a failure is, without which cell it is and without its numbers: case, variant and
 // language, how it ended (failed, known, error), the message with the cell's identity and
-// every number taken out ("interior max error # > #"), the attribution and the name of the
-// fitting explanation. A bug in one shader fails its 12 cells (3 paths x 4 shapes) with
-// different maxima but one key; the HTML report shows them as one card.
+// every number taken out ("interior max error # > #"), the attribution, the name of the
+// fitting explanation and the line where a port departs. A bug in one shader fails its 12
+// cells (3 paths x 4 shapes) with different maxima but one key; the HTML report shows them
+// as one card, the console as one entry.
 std::string failure_key(const CellResult& r);
 
 // Cells with the same case and the same key, in first-seen order (key_of(r) should

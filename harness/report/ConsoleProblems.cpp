@@ -123,13 +123,9 @@ bool print_problems(const RunReport& report, std::FILE* out, bool blank_line_fir
       for (const std::string& line : t.details) key += "\n" + line;
       return without_cell_identity(key, r);
     };
-    // Failures group as the HTML report's cards do (failure_key: the numbers taken out),
-    // and apart where a port departs at another line.
-    const auto failure_key_of = [](const CellResult& r) {
-      const auto& d = r.divergence;
-      return failure_key(r) + (d ? fmt::format("\x1f{}:{}:{}", d->kind, d->file, d->line) : "");
-    };
-    const auto groups = by_failure ? group_cells(cells, failure_key_of) : group_cells(cells, key_of);
+    // Failures group as the HTML report's cards do (failure_key: the numbers taken out).
+    const auto groups = by_failure ? group_cells(cells, [](const CellResult& r) { return failure_key(r); })
+                                   : group_cells(cells, key_of);
     for (const auto& group : groups) {
       const CellResult& shown = by_failure ? worst_of(group) : *group.front();
       EntryText text = text_of(shown);

@@ -44,6 +44,10 @@ TEST(FailureKey, AnotherWayOfFailingIsAnotherKey) {
   CellResult explained = a;
   explained.explanations = {{"constant_factor", "x pi", 1e-6, 1e-7, 100, true, "matches the reference x pi"}};
   EXPECT_NE(failure_key(a), failure_key(explained));
+  CellResult departs = a, departs_later = a;
+  departs.divergence = CellResult::Divergence{.kind = "found", .file = "port.frag", .line = 16};
+  departs_later.divergence = CellResult::Divergence{.kind = "found", .file = "port.frag", .line = 17};
+  EXPECT_NE(failure_key(departs), failure_key(departs_later));
   // Digits that are part of a word are words: c5 is not c7.
   EXPECT_NE(failure_key(failing_cell("vulkan", "spirv", "cube", "register c5 unbound")),
             failure_key(failing_cell("vulkan", "spirv", "cube", "register c7 unbound")));
