@@ -109,7 +109,8 @@ EntryText known_text(const CellResult& r) {
 bool print_problems(const RunReport& report, std::FILE* out, bool blank_line_first, bool colour) {
   bool printed = false;
   // Cells whose entry reads the same but for their own identity are printed once, with
-  // the cells it stands for (report/CellGroups.h).
+  // the cells it stands for (report/CellGroups.h); failures also when only their numbers
+  // differ.
   auto section = [&](const char* title, Tint tint, auto&& wanted, auto&& text_of, bool images, bool by_failure = false) {
     std::vector<const CellResult*> cells;
     for (const CellResult& r : report.results)
