@@ -10,6 +10,7 @@
 #include "core/AtomicFile.h"
 #include "core/InstalledTree.h"
 #include "core/ThisExecutable.h"
+#include "imageio/ExrHeaderScan.h"
 #include "imageio/ModuleAbi.h"
 
 namespace shaderbed {
@@ -85,6 +86,7 @@ Result<void> write_image_file(const std::string& path, int width, int height, in
 Result<ImagePixels> read_image_file(const std::string& path) {
   const LoadedModule& module = image_module();
   if (!module.table) return std::unexpected(image_error(module.error, path));
+  if (auto ok = check_exr_header_sizes(path); !ok) return std::unexpected(ok.error());
   std::array<char, 1024> error{};
   ImagePixels image;
   float* pixels = nullptr;
@@ -99,6 +101,7 @@ Result<ImagePixels> read_image_file(const std::string& path) {
 Result<ImageFileLevels> read_image_levels(const std::string& path, bool all_levels) {
   const LoadedModule& module = image_module();
   if (!module.table) return std::unexpected(image_error(module.error, path));
+  if (auto ok = check_exr_header_sizes(path); !ok) return std::unexpected(ok.error());
   ImageFileLevels file;
   for (int level = 0, levels = 1; level < (all_levels ? levels : 1); ++level) {
     std::array<char, 1024> error{};

@@ -87,5 +87,21 @@ TEST(TextureBounds, APngDeclaring30000SquaredIsRefusedFromItsHeader) {
   expect_texture_error(cell, "declares 30000x30000");
 }
 
+// OpenEXR 3.1 would allocate the 1.8 GB the Software attribute declares before finding
+// that the 60-byte file does not hold it (texture_loader_fuzzer's find).
+TEST(TextureBounds, AnExrDeclaringAnAttributeLargerThanItselfIsRefusedFromItsHeader) {
+  test::TempDir root("texture_exr_attribute");
+  const nlohmann::json cell = run_with_texture(root, [](const std::string& p) {
+    std::ofstream out(p, std::ios::binary);
+    const unsigned char start[] = {0x76, 0x2f, 0x31, 0x01, 2, 0, 0, 0};
+    out.write(reinterpret_cast<const char*>(start), sizeof start);
+    out.write("Software\0string\0", 16);
+    const unsigned char declared[] = {0xa0, 0x00, 0x61, 0x6c};   // 0x6c6100a0 = 1818296480
+    out.write(reinterpret_cast<const char*>(declared), sizeof declared);
+    out << std::string(32, 'x');
+  });
+  expect_texture_error(cell, "attribute 'Software' (string) declares 1818296480 bytes, more than the 60-byte file holds");
+}
+
 }  // namespace
 }  // namespace shaderbed
