@@ -130,7 +130,8 @@ bool print_problems(const RunReport& report, std::FILE* out, bool blank_line_fir
     for (const auto& group : groups) {
       const CellResult& shown = by_failure ? worst_of(group) : *group.front();
       EntryText text = text_of(shown);
-      const bool differ = std::ranges::any_of(group, [&](const CellResult* r) { return key_of(*r) != key_of(shown); });
+      const std::string shown_key = key_of(shown);
+      const bool differ = std::ranges::any_of(group, [&](const CellResult* r) { return key_of(*r) != shown_key; });
       if (differ) text.details.insert(text.details.begin(), "figures: the worst of them, " + where(shown));
       print_entry(group, shown, text, images, out);
     }

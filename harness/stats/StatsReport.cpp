@@ -165,6 +165,19 @@ struct TableRows {
   std::map<std::string, std::map<std::string, const StatsEntry*>> by_row;
 };
 
+// Calls row(name, cells) for each row in order, with a blank line in `out` between cases.
+template <class Row>
+void for_each_row(const TableRows& t, std::string& out, Row&& row) {
+  std::string last_case;
+  for (const std::string& r : t.rows) {
+    const auto& cells = t.by_row.at(r);
+    const std::string& case_name = cells.begin()->second->case_name;
+    if (!last_case.empty() && case_name != last_case) out += "\n";
+    last_case = case_name;
+    row(r, cells);
+  }
+}
+
 TableRows table_rows(const StatsReport& report) {
   TableRows t;
   for (const char* l : {"hlsl", "cg", "glsl"})
@@ -231,12 +244,7 @@ std::string compact_table(const TableRows& t) {
   std::string out = fmt::format("{:<{}} {:<4} {:>5}{:>4}{:>4}{:>4}{:>4} {:>5}{:>5} {:>5} {:>6} {:>6}  {}\n",
                                 "case/variant/stage", w, "lang", "spirv", "ar", "ex", "tx", "cf", "-O", "-Os", "glsl",
                                 "nir vk", "nir gl", "book");
-  std::string last_case;
-  for (const std::string& r : t.rows) {
-    const auto& cells = t.by_row.at(r);
-    const StatsEntry* any = cells.begin()->second;
-    if (!last_case.empty() && any->case_name != last_case) out += "\n";
-    last_case = any->case_name;
+  for_each_row(t, out, [&](const std::string& r, const auto& cells) {
     bool first = true, book_shown = false;   // the book's count once per row group, on a counted line
     for (const std::string& l : t.languages) {
       auto it = cells.find(l);
@@ -256,7 +264,7 @@ std::string compact_table(const TableRows& t) {
       }
       first = false;
     }
-  }
+  });
   out += "\nGLSL.std.450 calls after -O:\n";
   for (const std::string& r : t.rows)
     for (const std::string& l : t.languages) {
@@ -293,19 +301,14 @@ std::string wide_table(const TableRows& t) {
   out += fmt::format("{:<{}}", "case/variant/stage", w);
   for (size_t i = 0; i < t.languages.size(); ++i) out += " |" + block_head;
   out += " | DX9\n";
-  std::string last_case;
-  for (const std::string& r : t.rows) {
-    const auto& cells = t.by_row.at(r);
-    const StatsEntry* any = cells.begin()->second;
-    if (!last_case.empty() && any->case_name != last_case) out += "\n";
-    last_case = any->case_name;
+  for_each_row(t, out, [&](const std::string& r, const auto& cells) {
     out += fmt::format("{:<{}}", r, w);
     for (const std::string& l : t.languages) {
       auto it = cells.find(l);
       out += " |" + block(it == cells.end() ? nullptr : it->second);
     }
-    out += " | " + book_text(*any) + "\n";
-  }
+    out += " | " + book_text(*cells.begin()->second) + "\n";
+  });
   // The GLSL.std.450 calls after -O, per shader, where the languages differ is easy to spot.
   out += "\nGLSL.std.450 calls after -O (per language):\n";
   for (const std::string& r : t.rows) {
